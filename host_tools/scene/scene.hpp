@@ -1,0 +1,116 @@
+// The parsed, validated scene file (spec: shared/spec/scene-format.md, version 1).
+// Host only: doubles and std::vector are fine here. Every error with file and
+// field path comes from load_scene(), before anything is rendered.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace spanlight::scene {
+
+enum class Filter { nearest, bilinear };
+enum class Wrap { repeat, clamp, border };
+enum class Cull { none, back };
+enum class ShadowFilter { nearest, pcf2x2 };
+
+// 8-bit RGB, top row first (as in the file). Grey is expanded, alpha dropped.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;  // width * height * 3
+  std::array<std::uint8_t, 3> texel(int x, int y) const {
+    const auto i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 3;
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+};
+
+struct Texture {
+  std::string name;
+  std::filesystem::path path;  // as resolved against the scene's folder
+  Filter filter = Filter::bilinear;
+  Wrap wrap = Wrap::repeat;
+  Image image;
+};
+
+struct Camera {
+  glm::dvec3 eye{0.0}, target{0.0, 0.0, -1.0}, up{0.0, 1.0, 0.0};
+  double fovy_deg = 60.0;
+  double near = 0.1;
+  double far = 100.0;
+};
+
+struct Mesh {
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec2> uvs;  // same count as positions (zeros where the file has none)
+  std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into positions, checked in range
+};
+
+struct Object {
+  std::string name;
+  Mesh mesh;
+  glm::dvec3 color{1.0};
+  int texture = -1;  // index into Scene::textures, -1: none
+  Cull cull = Cull::none;
+  glm::dmat4 model{1.0};  // M = T * Rz * Ry * Rx * S, or the given matrix
+};
+
+struct Shadows {
+  int map_size = 0;
+  double bias = 0.0;
+  ShadowFilter filter = ShadowFilter::nearest;
+};
+
+struct Projector {
+  std::string name;
+  glm::dvec3 eye{0.0}, target{0.0, 0.0, -1.0}, up{0.0, 1.0, 0.0};
+  double fovy_deg = 60.0;
+  double aspect = 1.0;
+  double near = 0.1;
+  double far = 100.0;
+  int image = -1;  // index into Scene::textures
+  glm::dvec3 color{1.0};
+  std::optional<Shadows> shadows;
+};
+
+struct Scene {
+  std::filesystem::path file;
+  std::string name;
+  int width = 0;
+  int height = 0;
+  Camera camera;
+  glm::dvec3 ambient{0.0};
+  std::vector<Texture> textures;
+  std::vector<Object> objects;
+  std::vector<Projector> projectors;
+};
+
+// Thrown by load_scene for any bad input. what() reads "FILE: FIELD: EXPECTED".
+class SceneError : public std::runtime_error {
+ public:
+  SceneError(std::string file, std::string field, std::string expected)
+      : std::runtime_error(file + ": " + field + ": " + expected),
+        file_(std::move(file)), field_(std::move(field)), expected_(std::move(expected)) {}
+  const std::string& file() const { return file_; }
+  const std::string& field() const { return field_; }
+  const std::string& expected() const { return expected_; }
+
+ private:
+  std::string file_, field_, expected_;
+};
+
+// Parses and validates a scene file; loads its meshes and images. Throws SceneError.
+Scene load_scene(const std::filesystem::path& file);
+
+// The matrices the spec defines, in double (GLM conventions, column-major).
+glm::dmat4 camera_view_projection(const Scene& scene);            // perspective(fovy, w/h, n, f) * lookAt
+glm::dmat4 projector_view_projection(const Projector& projector);  // P_j * V_j
+glm::dmat4 projector_texture_matrix(const Projector& projector);   // B * P_j * V_j, B maps [-1,1] to [0,1]
+
+}  // namespace spanlight::scene

@@ -1,0 +1,116 @@
+// Stage 2, clip: homogeneous clipping in clip space (Sutherland-Hodgman).
+// The near plane (z >= -w) keeps the divide away from w <= 0; the far plane
+// (z <= w) matches OpenGL; the guard band (|x|, |y| <= G * w) keeps snapped
+// screen coordinates below 2^21 subpixels so setup's int64 products never
+// overflow (see setup.hpp). Every attribute is interpolated linearly in clip
+// space, as the spec asks: uv and each projector's (s, t, r, q).
+#pragma once
+
+#include <cstdint>
+
+#include "fixedpoint/bits.hpp"
+#include "spanlight/transform.hpp"
+
+namespace spanlight {
+
+template <int MaxProjectors>
+struct ClipVertex {
+  Vec4Wide clip;
+  std::int32_t u, v;
+  Vec4Wide proj[MaxProjectors > 0 ? MaxProjectors : 1];  // (s, t, r, q), Q31.32
+};
+
+// A triangle clipped by 6 planes has at most 3 + 6 vertices.
+inline constexpr int max_clipped_vertices = 9;
+
+template <int MaxProjectors>
+struct ClipPolygon {
+  ClipVertex<MaxProjectors> v[max_clipped_vertices];
+  int count = 0;
+};
+
+// Signed distance to a plane; inside when >= 0. The planes are linear in clip
+// coordinates, so the distance along an edge is linear in the edge parameter.
+enum class ClipPlane : std::uint8_t { near, far, left, right, bottom, top };
+
+constexpr std::int64_t plane_distance(ClipPlane plane, const Vec4Wide& c, std::int64_t guard) {
+  switch (plane) {
+    case ClipPlane::near: return c.z + c.w;
+    case ClipPlane::far: return c.w - c.z;
+    case ClipPlane::left: return guard * c.w + c.x;
+    case ClipPlane::right: return guard * c.w - c.x;
+    case ClipPlane::bottom: return guard * c.w + c.y;
+    case ClipPlane::top: return guard * c.w - c.y;
+  }
+  return 0;
+}
+
+// a + (b - a) * t, t in Q2.30 within [0, 1]. |b - a| < 2^62 holds for clip
+// values bounded by the transform (< 2^61).
+constexpr std::int64_t lerp_wide(std::int64_t a, std::int64_t b, std::int32_t t) {
+  return a + fixedpoint::mul_shift_wide(b - a, t, 30);
+}
+
+constexpr Vec4Wide lerp_wide(const Vec4Wide& a, const Vec4Wide& b, std::int32_t t) {
+  return {lerp_wide(a.x, b.x, t), lerp_wide(a.y, b.y, t), lerp_wide(a.z, b.z, t), lerp_wide(a.w, b.w, t)};
+}
+
+// The edge parameter where the distance crosses zero: da / (da - db) in Q2.30,
+// da >= 0 > db. Both are shifted down together until the divisor fits 32 bits,
+// which keeps the ratio to 2^-31 relative (one exact 64/32 division per cut).
+constexpr std::int32_t crossing(std::int64_t da, std::int64_t db) {
+  std::int64_t num = da;
+  std::int64_t den = da - db;  // > 0
+  const int excess = fixedpoint::bit_length(static_cast<std::uint64_t>(den)) - 32;
+  if (excess > 0) {
+    num >>= excess;
+    den >>= excess;
+  }
+  return static_cast<std::int32_t>((num << 30) / den);  // num <= den < 2^32: fits
+}
+
+template <int P>
+constexpr ClipVertex<P> lerp_vertex(const ClipVertex<P>& a, const ClipVertex<P>& b, std::int32_t t,
+                                    int projector_begin, int projector_end) {
+  ClipVertex<P> out{};
+  out.clip = lerp_wide(a.clip, b.clip, t);
+  out.u = static_cast<std::int32_t>(lerp_wide(a.u, b.u, t));
+  out.v = static_cast<std::int32_t>(lerp_wide(a.v, b.v, t));
+  for (int j = projector_begin; j < projector_end; ++j) out.proj[j] = lerp_wide(a.proj[j], b.proj[j], t);
+  return out;
+}
+
+template <int P>
+constexpr void clip_against(ClipPolygon<P>& poly, ClipPlane plane, std::int64_t guard, int projector_begin,
+                            int projector_end) {
+  ClipPolygon<P> out{};
+  for (int i = 0; i < poly.count; ++i) {
+    const ClipVertex<P>& a = poly.v[i];
+    const ClipVertex<P>& b = poly.v[(i + 1) % poly.count];
+    const std::int64_t da = plane_distance(plane, a.clip, guard);
+    const std::int64_t db = plane_distance(plane, b.clip, guard);
+    if (da >= 0) out.v[out.count++] = a;
+    // Always cut from the inside vertex, so the same edge gives the same
+    // point whichever triangle it belongs to (watertight across neighbours).
+    if (da >= 0 && db < 0) out.v[out.count++] = lerp_vertex(a, b, crossing(da, db), projector_begin, projector_end);
+    if (da < 0 && db >= 0) out.v[out.count++] = lerp_vertex(b, a, crossing(db, da), projector_begin, projector_end);
+  }
+  poly = out;
+}
+
+// Clips in place; returns false when nothing is left. Planes a triangle does
+// not cross cost one distance check per vertex.
+template <int P>
+constexpr bool clip_polygon(ClipPolygon<P>& poly, std::int64_t guard, int projector_begin, int projector_end) {
+  constexpr ClipPlane planes[] = {ClipPlane::near, ClipPlane::far, ClipPlane::left,
+                                  ClipPlane::right, ClipPlane::bottom, ClipPlane::top};
+  for (ClipPlane plane : planes) {
+    bool any_out = false;
+    for (int i = 0; i < poly.count; ++i) any_out |= plane_distance(plane, poly.v[i].clip, guard) < 0;
+    if (any_out) clip_against(poly, plane, guard, projector_begin, projector_end);
+    if (poly.count < 3) return false;
+  }
+  return true;
+}
+
+}  // namespace spanlight

@@ -1,0 +1,46 @@
+// What a scene uses, known at compile time, so what it does not use is not
+// compiled (tgx's idea): a firmware build bakes one Features type; the host
+// tools instantiate the full one. Runtime knobs that cost nothing to keep
+// dynamic (span length, depth bits) live in Precision.
+#pragma once
+
+#include <cstdint>
+
+#include "fixedpoint/reciprocal.hpp"
+
+namespace spanlight {
+
+enum class PixelFormat : std::uint8_t { rgb888, rgb565 };
+
+// The divide of the perspective step: table lookup plus Newton steps.
+template <int TableBits, int NewtonSteps>
+struct TableReciprocal {
+  static constexpr int table_bits = TableBits;
+  static constexpr int newton_steps = NewtonSteps;
+  static constexpr fixedpoint::Reciprocal of(std::uint32_t d) {
+    return fixedpoint::reciprocal<TableBits, NewtonSteps>(d);
+  }
+};
+
+template <int MaxProjectors, bool Shadows, bool Pcf, bool Bilinear, PixelFormat Format, typename Reciprocal>
+struct Features {
+  static constexpr int max_projectors = MaxProjectors;  // 0 links no projector code at all
+  static constexpr bool shadows = Shadows;              // shadow maps and the depth compare
+  static constexpr bool pcf = Pcf;                      // pcf2x2 filter present (else nearest only)
+  static constexpr bool bilinear = Bilinear;            // some texture uses bilinear
+  static constexpr PixelFormat format = Format;
+  using reciprocal = Reciprocal;
+};
+
+// The host tools' build: everything on, the table chosen at run time by the caller's template.
+template <PixelFormat Format, int TableBits, int NewtonSteps>
+using HostFeatures = Features<4, true, true, true, Format, TableReciprocal<TableBits, NewtonSteps>>;
+
+struct Precision {
+  std::uint8_t span_log2 = 4;    // a reciprocal every 2^span_log2 pixels; 0 = every pixel
+  std::uint8_t span_tolerance_log2 = 3;  // shorten segments that would drift > 1/8 texel; 0: never
+  std::uint8_t depth_bits = 24;  // 16 or 24: bits kept in the depth buffer and shadow maps
+  bool fused = false;            // one pass per pixel instead of the paper's multipass
+};
+
+}  // namespace spanlight

@@ -1,0 +1,125 @@
+// The per-pass kernels the geometry walk calls at each covered pixel. Each is
+// tiny and inlined into the span loop, so a pass pays only for what it reads.
+#pragma once
+
+#include <cstdint>
+
+#include "spanlight/buffers.hpp"
+#include "spanlight/geometry.hpp"
+#include "spanlight/shade.hpp"
+
+namespace spanlight {
+
+// Observers let tests see which pixels a pass touched; firmware uses none.
+struct NoObserver {
+  static constexpr void touched(int /*pass*/, std::int32_t /*index*/) {}
+};
+
+enum PassId : int { pass_shadow = 0, pass_depth_ambient = 1, pass_light = 2, pass_modulate = 3, pass_fused = 4 };
+
+template <typename DepthT>
+struct ShadowDepthKernel {
+  DepthT* map;
+  int depth_bits;
+  SpanNeeds needs() const { return {false, 0, 0}; }
+  void object(const ObjectData&) {}
+  template <typename V>
+  void pixel(std::int32_t i, const V& v) {
+    const std::uint32_t d = depth_store(v.z, depth_bits);
+    if (d < map[i]) map[i] = static_cast<DepthT>(d);
+  }
+};
+
+template <typename F, typename DepthT, typename Observer>
+struct DepthAmbientKernel {
+  using Color = ColorTraits<F::format>;
+  FrameTarget<F::format, DepthT> target;
+  Rgb8 ambient;
+  int depth_bits;
+  SpanNeeds needs() const { return {false, 0, 0}; }
+  void object(const ObjectData&) {}
+  template <typename V>
+  void pixel(std::int32_t i, const V& v) {
+    const std::uint32_t d = depth_store(v.z, depth_bits);
+    if (d < target.depth[i]) {
+      target.depth[i] = static_cast<DepthT>(d);
+      Color::store(target.color + i * Color::per_pixel, ambient);
+      Observer::touched(pass_depth_ambient, i);
+    }
+  }
+};
+
+template <typename F, typename DepthT, typename Observer>
+struct LightKernel {
+  using Color = ColorTraits<F::format>;
+  FrameTarget<F::format, DepthT> target;
+  LightContext light;
+  int projector;
+  int depth_bits;
+  SpanNeeds needs() const { return {false, projector, projector + 1}; }
+  void object(const ObjectData&) {}
+  template <typename V>
+  void pixel(std::int32_t i, const V& v) {
+    if (depth_store(v.z, depth_bits) != target.depth[i]) return;
+    Observer::touched(pass_light, i);
+    const Rgb8 add = projector_light<F, DepthT>(light, v, projector, depth_bits);
+    if ((add.r | add.g | add.b) == 0) return;
+    typename Color::Storage* p = target.color + i * Color::per_pixel;
+    Color::store(p, add_light(Color::load(p), add));
+  }
+};
+
+template <typename F, typename DepthT, typename Observer>
+struct ModulateKernel {
+  using Color = ColorTraits<F::format>;
+  FrameTarget<F::format, DepthT> target;
+  const TextureData* textures;
+  const ObjectData* current = nullptr;
+  const TextureData* texture = nullptr;
+  int depth_bits;
+  SpanNeeds needs() const { return {current->texture >= 0, 0, 0}; }
+  void object(const ObjectData& o) {
+    current = &o;
+    texture = o.texture >= 0 ? &textures[o.texture] : nullptr;
+  }
+  template <typename V>
+  void pixel(std::int32_t i, const V& v) {
+    if (depth_store(v.z, depth_bits) != target.depth[i]) return;
+    Observer::touched(pass_modulate, i);
+    typename Color::Storage* p = target.color + i * Color::per_pixel;
+    Color::store(p, modulate(Color::load(p), surface_colour<F>(*current, texture, v)));
+  }
+};
+
+// Everything at once; the same quantisation steps as the passes, so the same bytes.
+template <typename F, typename DepthT, typename Observer>
+struct FusedKernel {
+  using Color = ColorTraits<F::format>;
+  FrameTarget<F::format, DepthT> target;
+  const PreparedScene* scene;
+  const LightContext* lights;  // one per projector
+  Rgb8 ambient;
+  const ObjectData* current = nullptr;
+  const TextureData* texture = nullptr;
+  int depth_bits;
+  SpanNeeds needs() const { return {current->texture >= 0, 0, scene->projector_count}; }
+  void object(const ObjectData& o) {
+    current = &o;
+    texture = o.texture >= 0 ? &scene->textures[o.texture] : nullptr;
+  }
+  template <typename V>
+  void pixel(std::int32_t i, const V& v) {
+    const std::uint32_t d = depth_store(v.z, depth_bits);
+    if (d >= target.depth[i]) return;
+    target.depth[i] = static_cast<DepthT>(d);
+    Observer::touched(pass_fused, i);
+    Rgb8 c = Color::quantize(ambient);
+    for (int j = 0; j < scene->projector_count; ++j) {
+      const Rgb8 add = projector_light<F, DepthT>(lights[j], v, j, depth_bits);
+      if ((add.r | add.g | add.b) != 0) c = Color::quantize(add_light(c, add));
+    }
+    Color::store(target.color + i * Color::per_pixel, modulate(c, surface_colour<F>(*current, texture, v)));
+  }
+};
+
+}  // namespace spanlight

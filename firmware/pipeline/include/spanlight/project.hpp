@@ -1,0 +1,65 @@
+// Stage 3a, the perspective divide: clip space to snapped window coordinates.
+// One reciprocal per vertex (12-bit table, two Newton steps: relative error
+// below 2^-27, so a 4096-px-wide window lands within 2^-7 subpixel before the
+// rounding to 1/256 px).
+#pragma once
+
+#include <cstdint>
+
+#include "fixedpoint/bits.hpp"
+#include "fixedpoint/reciprocal.hpp"
+#include "spanlight/transform.hpp"
+
+namespace spanlight {
+
+inline constexpr int subpixel_bits = 8;  // D3D11's 8 sub-pixel bits
+inline constexpr int depth_frac_bits = 30;  // window depth, Q1.30
+
+struct ScreenVertex {
+  std::int32_t x, y;  // window position in 1/256 px, y down (row 0 at the top)
+  std::int32_t z;     // window depth (z/w + 1)/2, Q1.30
+  std::uint32_t inv_w_mantissa;  // 1/w_raw ~= mantissa * 2^-inv_w_exponent
+  int inv_w_exponent;
+};
+
+// (a + w) / w in Q.32 for |a| <= G*w: both are shifted by k so that w fits 28
+// bits; the quotient then keeps 28 significant bits, ample for 2^20 subpixels.
+struct VertexDivider {
+  int k;
+  fixedpoint::Reciprocal rcp;  // of w >> k
+  constexpr explicit VertexDivider(std::int64_t w) : k(0), rcp{} {
+    if (w < 1) w = 1;  // w >= 0 after near and far clipping; w == 0 only at the eye itself
+    const int excess = fixedpoint::bit_length(static_cast<std::uint64_t>(w)) - 28;
+    k = excess > 0 ? excess : 0;
+    rcp = fixedpoint::reciprocal<12, 2>(static_cast<std::uint32_t>(w >> k));
+  }
+  // (numerator / w) * 2^32, numerator >> k < 2^31 when |numerator| <= 7*w.
+  constexpr std::int64_t ratio_q32(std::int64_t numerator) const {
+    const std::int64_t product = (numerator >> k) * static_cast<std::int64_t>(rcp.mantissa);
+    const int shift = rcp.shift - 32;  // -1 only for w < 2^4 raw, where the product is tiny
+    return shift >= 0 ? product >> shift : product * 2;
+  }
+};
+
+constexpr std::int32_t round_q32_to_int(std::int64_t value_q32) {
+  return static_cast<std::int32_t>((value_q32 + (std::int64_t{1} << 31)) >> 32);
+}
+
+constexpr ScreenVertex project(const Vec4Wide& c, int width, int height) {
+  const VertexDivider div(c.w);
+  const std::int64_t w = c.w < 1 ? 1 : c.w;
+  // x_win * 256 = (x/w + 1) * width * 128; the ratio is < 2^35, times 2^19 < 2^54.
+  const std::int64_t x_ratio = div.ratio_q32(c.x + w);
+  const std::int64_t y_ratio = div.ratio_q32(w - c.y);  // row 0 at the top: flip y
+  const std::int64_t z_ratio = div.ratio_q32(c.z + w);  // in [0, 2] after clipping
+  ScreenVertex v{};
+  v.x = round_q32_to_int(x_ratio * (std::int64_t{width} << (subpixel_bits - 1)));
+  v.y = round_q32_to_int(y_ratio * (std::int64_t{height} << (subpixel_bits - 1)));
+  const std::int64_t z = (z_ratio + (std::int64_t{1} << 2)) >> 3;  // /2, Q.32 -> Q.30
+  v.z = static_cast<std::int32_t>(z < 0 ? 0 : (z > (1 << depth_frac_bits) ? (1 << depth_frac_bits) : z));
+  v.inv_w_mantissa = div.rcp.mantissa;
+  v.inv_w_exponent = div.rcp.shift + div.k;
+  return v;
+}
+
+}  // namespace spanlight

@@ -1,0 +1,174 @@
+// Stage 3b, triangle setup: orientation and culling, exact integer edge
+// functions with the top-left rule, and the normalisations the span stage
+// needs (1/(2*area) for barycentrics, per-vertex perspective weights).
+//
+// Bounds: snapped coordinates stay within +-2^21 subpixels (the clip stage's
+// guard band), so edge deltas are < 2^22, an edge function is < 2^45 in int64,
+// and 256 * delta < 2^30 fits the int32 steppers.
+#pragma once
+
+#include <cstdint>
+
+#include "fixedpoint/bits.hpp"
+#include "spanlight/project.hpp"
+#include "spanlight/prepared_scene.hpp"
+
+namespace spanlight {
+
+constexpr std::int64_t floor_div(std::int64_t n, std::int64_t d) {  // d > 0
+  const std::int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+// One edge a->b as a half-plane over pixel columns of a row:
+//   E(c) = slope * c + row_value >= bias,   E = dx*(py - ay) - dy*(px - ax),
+// with px = 256c + 128. A left edge (slope > 0) bounds columns from below, a
+// right edge from above; a horizontal edge admits a whole row or none of it.
+// Top-left rule: bias 0 on top and left edges, 1 on the others, so a centre
+// exactly on a shared edge belongs to one triangle only.
+struct Edge {
+  std::int64_t slope;      // dE per column, -256*dy
+  std::int64_t row_value;  // E at column 0 of the current row
+  std::int64_t row_step;   // 256*dx
+  std::int32_t bias;
+  // floor((row_value - bias) / |slope|) kept incrementally: quotient + remainder.
+  std::int64_t quotient;
+  std::int64_t remainder;  // in [0, |slope|)
+  std::int64_t quotient_step, remainder_step;
+
+  constexpr void start(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t row0_centre_y) {
+    const std::int64_t dx = bx - ax, dy = by - ay;
+    const bool top_left = dy < 0 || (dy == 0 && dx > 0);
+    bias = top_left ? 0 : 1;
+    slope = -256 * dy;
+    row_step = 256 * dx;
+    row_value = dx * (row0_centre_y - ay) - dy * (128 - ax);
+    if (slope != 0) {
+      const std::int64_t d = slope > 0 ? slope : -slope;
+      quotient = floor_div(row_value - bias, d);
+      remainder = (row_value - bias) - quotient * d;
+      quotient_step = floor_div(row_step, d);
+      remainder_step = row_step - quotient_step * d;
+    } else {
+      quotient = remainder = quotient_step = remainder_step = 0;
+    }
+  }
+
+  constexpr void next_row() {
+    row_value += row_step;
+    if (slope != 0) {
+      const std::int64_t d = slope > 0 ? slope : -slope;
+      quotient += quotient_step;
+      remainder += remainder_step;
+      if (remainder >= d) {
+        remainder -= d;
+        ++quotient;
+      }
+    }
+  }
+
+  constexpr std::int64_t value_at(std::int32_t column) const { return slope * column + row_value; }
+};
+
+struct TriangleSetup {
+  Edge edge[3];  // edge i runs from vertex i+1 to vertex i+2: E_i = 2*area * lambda_i
+  std::int32_t row_begin, row_end;  // rows whose centres lie within the vertical extent
+  // lambda_i in Q0.30 = ((E_i >> area_shift) * area_rcp) >> 32 (area_shift < 0: shift left)
+  int area_shift;
+  std::uint64_t area_rcp;  // floor(2^62 / (D >> area_shift)), D = 2*area in subpixel^2
+  std::int32_t z0, dz1, dz2;  // window depth at vertex 0 and the deltas to 1 and 2, Q1.30
+  // Depth steps by dz/dx per pixel (Q1.30 with 32 more fraction bits), so a
+  // pixel's depth depends only on its span's start, never on how a pass cuts
+  // the span: every pass sees bit-identical depth. Triangles too thin for the
+  // gradient to fit evaluate depth exactly at each pixel instead.
+  std::int64_t dzdx;
+  bool depth_per_pixel;
+  std::uint32_t omega[3];     // perspective weights, proportional to 1/w_i, max in [2^30, 2^31]
+  std::uint8_t order[3];      // which input vertex sits at each setup slot (orientation swap)
+};
+
+constexpr std::int64_t signed_double_area(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+  return (std::int64_t{b.x} - a.x) * (std::int64_t{c.y} - a.y) - (std::int64_t{b.y} - a.y) * (std::int64_t{c.x} - a.x);
+}
+
+// Builds the setup; false when the triangle is culled, has no area, or
+// covers no row of the target. In y-down window coordinates a triangle that
+// is counter-clockwise as seen in the image (front) has a negative area.
+constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int width, int height, TriangleSetup& t) {
+  (void)width;
+  std::int64_t area2 = signed_double_area(in[0], in[1], in[2]);
+  if (area2 == 0) return false;
+  if (cull == Cull::back && area2 > 0) return false;  // clockwise on screen
+  t.order[0] = 0;
+  t.order[1] = area2 > 0 ? 1 : 2;
+  t.order[2] = area2 > 0 ? 2 : 1;
+  if (area2 < 0) area2 = -area2;
+  const ScreenVertex& v0 = in[t.order[0]];
+  const ScreenVertex& v1 = in[t.order[1]];
+  const ScreenVertex& v2 = in[t.order[2]];
+
+  const std::int32_t y_min = v0.y < v1.y ? (v0.y < v2.y ? v0.y : v2.y) : (v1.y < v2.y ? v1.y : v2.y);
+  const std::int32_t y_max = v0.y > v1.y ? (v0.y > v2.y ? v0.y : v2.y) : (v1.y > v2.y ? v1.y : v2.y);
+  std::int64_t r0 = floor_div(std::int64_t{y_min} - 128 + 255, 256);  // first centre >= y_min
+  std::int64_t r1 = floor_div(std::int64_t{y_max} - 128, 256) + 1;    // past the last centre <= y_max
+  if (r0 < 0) r0 = 0;
+  if (r1 > height) r1 = height;
+  if (r0 >= r1) return false;
+  t.row_begin = static_cast<std::int32_t>(r0);
+  t.row_end = static_cast<std::int32_t>(r1);
+
+  const std::int64_t centre_y = r0 * 256 + 128;
+  const ScreenVertex* v[3] = {&v0, &v1, &v2};
+  for (int i = 0; i < 3; ++i) {
+    const ScreenVertex& a = *v[(i + 1) % 3];
+    const ScreenVertex& b = *v[(i + 2) % 3];
+    t.edge[i].start(a.x, a.y, b.x, b.y, centre_y);
+  }
+
+  // Normalise D into [2^30, 2^31) so lambda = E/D needs one 64-bit multiply.
+  t.area_shift = fixedpoint::bit_length(static_cast<std::uint64_t>(area2)) - 31;
+  const std::uint64_t d_norm = t.area_shift >= 0 ? static_cast<std::uint64_t>(area2) >> t.area_shift
+                                                 : static_cast<std::uint64_t>(area2) << -t.area_shift;
+  t.area_rcp = (std::uint64_t{1} << 62) / d_norm;
+
+  t.z0 = v0.z;
+  t.dz1 = v1.z - v0.z;
+  t.dz2 = v2.z - v0.z;
+  // dz/dx = (dz1 * slope1 + dz2 * slope2) / D: the numerator is < 2^62; times
+  // 2^62/Dn (taken as Q.30 below 2^31) and 2^-(28 + area_shift) gives Q.62.
+  {
+    const std::int64_t num = std::int64_t{t.dz1} * (t.edge[1].slope >> 1) + std::int64_t{t.dz2} * (t.edge[2].slope >> 1);
+    const auto rcp = static_cast<std::int32_t>(t.area_rcp >> 2);  // < 2^31
+    const int shift = 28 + t.area_shift - 1;                       // the slopes were halved above
+    // |result| < 2^(bits(num) + 31 - shift): keep it below 2^61, else go per pixel.
+    const std::uint64_t magnitude = static_cast<std::uint64_t>(num < 0 ? -num : num);
+    t.depth_per_pixel = shift < 0 || fixedpoint::bit_length(magnitude) + 31 - shift > 61;
+    t.dzdx = 0;
+    if (!t.depth_per_pixel) {
+      const int pre = shift > 32 ? shift - 32 : 0;
+      t.dzdx = fixedpoint::mul_shift_wide(num >> pre, rcp, shift - pre);
+    }
+  }
+
+  // 1/w_i = mantissa_i * 2^-exponent_i; bring all three to the smallest
+  // exponent (the nearest vertex). A vertex 2^31 times farther gets weight 0.
+  int e_min = v0.inv_w_exponent;
+  if (v1.inv_w_exponent < e_min) e_min = v1.inv_w_exponent;
+  if (v2.inv_w_exponent < e_min) e_min = v2.inv_w_exponent;
+  for (int i = 0; i < 3; ++i) {
+    const int s = v[i]->inv_w_exponent - e_min;
+    t.omega[i] = s >= 32 ? 0u : v[i]->inv_w_mantissa >> s;
+  }
+  return true;
+}
+
+// lambda_i at a point from its exact edge value, Q0.30, clamped to [0, 1].
+constexpr std::int32_t barycentric(const TriangleSetup& t, std::int64_t e) {
+  if (e <= 0) return 0;
+  const std::uint64_t e_norm = t.area_shift >= 0 ? static_cast<std::uint64_t>(e) >> t.area_shift
+                                                 : static_cast<std::uint64_t>(e) << -t.area_shift;
+  const std::uint64_t lambda = (e_norm * t.area_rcp) >> 32;  // e_norm <= 2^31, rcp <= 2^32
+  return lambda > (1u << 30) ? (1 << 30) : static_cast<std::int32_t>(lambda);
+}
+
+}  // namespace spanlight

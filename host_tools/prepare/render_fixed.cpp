@@ -28,7 +28,9 @@ FixedFrame render_with(const PreparedStorage& prepared, const Precision& precisi
     maps[static_cast<std::size_t>(j)].resize(std::size_t{p.map_size} * p.map_size);
     map_pointers[static_cast<std::size_t>(j)] = maps[static_cast<std::size_t>(j)].data();
   }
-  const FrameTarget<Format, std::uint32_t> target{color.data(), frame.depth.data(), map_pointers.data()};
+  std::vector<std::uint8_t> tie_mask(tie_mask_bytes(scene.width, scene.height));
+  const FrameTarget<Format, std::uint32_t> target{color.data(), frame.depth.data(), map_pointers.data(),
+                                                  tie_mask.data()};
   const RenderStatus status = render_frame<F, std::uint32_t>(scene, target, precision);
   if (status != RenderStatus::ok) throw std::invalid_argument("the pipeline refused the frame (status " + std::to_string(static_cast<int>(status)) + ")");
 

@@ -48,7 +48,22 @@ struct FrameTarget {
   typename ColorTraits<Format>::Storage* color;  // width * height pixels, row 0 at the top
   DepthT* depth;                                 // width * height
   DepthT* const* shadow_maps;                    // one per projector (map_size^2), nullptr where unshadowed
+  // One bit per pixel (tie_mask_bytes): a z-equal pass claims a pixel once, so
+  // two surfaces that store the same depth there are not lit or modulated
+  // twice. The first one drawn wins, as it does in the depth pass.
+  std::uint8_t* tie_mask;
 };
+
+constexpr std::uint32_t tie_mask_bytes(std::uint32_t width, std::uint32_t height) { return (width * height + 7u) / 8u; }
+
+// True the first time a pixel is claimed since the mask was cleared.
+inline bool claim_pixel(std::uint8_t* mask, std::int32_t i) {
+  const auto bit = static_cast<std::uint8_t>(1u << (static_cast<std::uint32_t>(i) & 7u));
+  std::uint8_t& byte = mask[static_cast<std::uint32_t>(i) >> 3];
+  if (byte & bit) return false;
+  byte = static_cast<std::uint8_t>(byte | bit);
+  return true;
+}
 
 // Depth as stored: the top depth_bits of the Q1.30 window depth, cleared to all ones.
 constexpr std::uint32_t depth_clear(int depth_bits) { return (1u << depth_bits) - 1u; }

@@ -9,7 +9,7 @@
 
 namespace spanlight {
 
-enum class RenderStatus : std::uint8_t { ok, bad_precision, missing_shadow_map, too_many_projectors };
+enum class RenderStatus : std::uint8_t { ok, bad_precision, missing_shadow_map, missing_tie_mask, too_many_projectors };
 
 template <typename F, typename DepthT, typename Observer = NoObserver>
 RenderStatus render_frame(const PreparedScene& scene, const FrameTarget<F::format, DepthT>& target,
@@ -53,12 +53,19 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameTarget<F::forma
   }
   DepthAmbientKernel<F, DepthT, Observer> depth_pass{target, ambient, bits};
   draw_pass<F>(scene, eye, precision, depth_pass);
+  if (target.tie_mask == nullptr) return RenderStatus::missing_tie_mask;
+  const std::uint32_t mask_bytes = tie_mask_bytes(scene.width, scene.height);
+  auto clear_mask = [&] {
+    for (std::uint32_t i = 0; i < mask_bytes; ++i) target.tie_mask[i] = 0;
+  };
   if constexpr (F::max_projectors > 0) {
     for (int j = 0; j < scene.projector_count; ++j) {
+      clear_mask();
       LightKernel<F, DepthT, Observer> light_pass{target, lights[j], j, bits};
       draw_pass<F>(scene, eye, precision, light_pass);
     }
   }
+  clear_mask();
   ModulateKernel<F, DepthT, Observer> modulate_pass{target, scene.textures, nullptr, nullptr, bits};
   draw_pass<F>(scene, eye, precision, modulate_pass);
   return RenderStatus::ok;

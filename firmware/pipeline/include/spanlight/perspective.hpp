@@ -1,0 +1,109 @@
+// Stage 4a, the exact perspective-correct value at one point of a triangle:
+//
+//   lambda_i = E_i / 2A                      (exact edge values, one multiply)
+//   beta_i   = lambda_i w_i^-1 / sum(...)    (one reciprocal: the table + Newton knob)
+//   uv       = sum beta_i uv_i
+//   s/q, t/q, r/q = sum beta_i (s,t,r)_i / sum beta_i q_i   (one reciprocal per projector)
+//
+// The divisor for a projector is q, not the eye's 1/w (Segal et al., eq. 7).
+// Values are computed per "group" (the surface uv, or one projector), so each
+// group can be subdivided on its own schedule.
+#pragma once
+
+#include <cstdint>
+
+#include "spanlight/setup.hpp"
+
+namespace spanlight {
+
+inline constexpr int proj_frac_bits = 28;             // s/q, t/q, r/q in Q3.28
+inline constexpr std::int32_t proj_limit = 1 << 30;   // saturate at +-4: far outside [0, 1]
+inline constexpr std::int32_t one_q30 = 1 << 30;
+
+template <int P>
+struct TriangleAttributes {
+  std::int32_t u0, du1, du2, v0, dv1, dv2;  // texel coordinates * 2^uv_frac_bits (|u| < 2^29)
+  // per projector: (s, t, r, q) at vertex 0 and the deltas, normalised so |value| < 2^30
+  std::int32_t proj0[P > 0 ? P : 1][4];
+  std::int32_t proj_d1[P > 0 ? P : 1][4];
+  std::int32_t proj_d2[P > 0 ? P : 1][4];
+};
+
+constexpr std::int32_t mix3(std::int32_t base, std::int32_t d1, std::int32_t d2, std::int32_t b1, std::int32_t b2) {
+  // |d| < 2^31, b <= 2^30: each product < 2^61, the sum < 2^62.
+  return static_cast<std::int32_t>(base + ((std::int64_t{d1} * b1 + std::int64_t{d2} * b2) >> 30));
+}
+
+constexpr std::int32_t saturate_proj(std::int64_t x) {
+  return x > proj_limit ? proj_limit : (x < -proj_limit ? -proj_limit : static_cast<std::int32_t>(x));
+}
+
+// n / d in Q3.28 for d > 0, |n| < 2^31: n * mantissa < 2^62.
+template <typename R>
+constexpr std::int32_t divide_q28(std::int32_t n, std::uint32_t d) {
+  const fixedpoint::Reciprocal rcp = R::of(d);
+  return saturate_proj((std::int64_t{n} * rcp.mantissa) >> (rcp.shift - proj_frac_bits));
+}
+
+// Perspective-correct barycentrics beta_1, beta_2 (Q0.30) and the
+// screen-linear sum of lambda_i / w_i they were normalised by.
+struct Weights {
+  std::int32_t b1, b2;
+  std::uint32_t rho;
+};
+
+template <typename R>
+constexpr Weights perspective_weights(const TriangleSetup& t, std::int64_t e1, std::int64_t e2) {
+  const std::int32_t l1 = barycentric(t, e1);
+  const std::int32_t l2 = barycentric(t, e2);
+  std::int32_t l0 = one_q30 - l1 - l2;
+  if (l0 < 0) l0 = 0;
+  // rho_i = lambda_i * w_i^-1, each < 2^30.
+  const std::uint32_t rho0 = static_cast<std::uint32_t>((std::uint64_t(std::uint32_t(l0)) * t.omega[0]) >> 31);
+  const std::uint32_t rho1 = static_cast<std::uint32_t>((std::uint64_t(std::uint32_t(l1)) * t.omega[1]) >> 31);
+  const std::uint32_t rho2 = static_cast<std::uint32_t>((std::uint64_t(std::uint32_t(l2)) * t.omega[2]) >> 31);
+  const std::uint32_t sum = rho0 + rho1 + rho2;  // < 3 * 2^30
+  if (sum == 0) return {l1, l2, 0};
+  const fixedpoint::Reciprocal rcp = R::of(sum);
+  const int shift = rcp.shift - 30;  // >= 32 because sum < 2^32
+  return {static_cast<std::int32_t>((std::uint64_t{rho1} * rcp.mantissa) >> shift),
+          static_cast<std::int32_t>((std::uint64_t{rho2} * rcp.mantissa) >> shift), sum};
+}
+
+// One group's values at a point: the surface's (u, v) or a projector's
+// (s/q, t/q, r/q); `denominator` is the group's screen-linear divisor
+// (1/w, or q/w up to a constant) that the subdivision watches.
+struct GroupPoint {
+  std::int32_t value[3];
+  std::int64_t denominator;
+  bool front;  // q > 0 (always true for uv)
+};
+
+inline constexpr int uv_group = -1;
+
+template <int P, typename R>
+constexpr GroupPoint evaluate_group(const TriangleSetup& t, const TriangleAttributes<P>& a, int group,
+                                    std::int64_t e1, std::int64_t e2) {
+  const Weights w = perspective_weights<R>(t, e1, e2);
+  GroupPoint out{};
+  if (group == uv_group) {
+    out.value[0] = mix3(a.u0, a.du1, a.du2, w.b1, w.b2);
+    out.value[1] = mix3(a.v0, a.dv1, a.dv2, w.b1, w.b2);
+    out.denominator = w.rho;
+    out.front = true;
+    return out;
+  }
+  const int j = group;
+  const std::int32_t q = mix3(a.proj0[j][3], a.proj_d1[j][3], a.proj_d2[j][3], w.b1, w.b2);
+  out.denominator = std::int64_t{q} * w.rho;  // q/w up to the triangle's constant scale
+  out.front = q > 0;
+  if (q <= 0) {
+    out.value[0] = out.value[1] = out.value[2] = -proj_limit;  // never inside [0, 1]
+    return out;
+  }
+  const auto d = static_cast<std::uint32_t>(q);
+  for (int c = 0; c < 3; ++c) out.value[c] = divide_q28<R>(mix3(a.proj0[j][c], a.proj_d1[j][c], a.proj_d2[j][c], w.b1, w.b2), d);
+  return out;
+}
+
+}  // namespace spanlight

@@ -1,0 +1,51 @@
+// objects[]: geometry (an OBJ file or inline arrays), surface and transform.
+#include <array>
+
+#include "file_checks.hpp"
+#include "obj_mesh.hpp"
+#include "scene_readers.hpp"
+
+namespace spanlight::scene::detail {
+namespace {
+
+constexpr std::array<std::string_view, 3> inline_mesh_fields = {"positions", "uvs", "triangles"};
+
+Mesh read_geometry(const JsonField& object) {
+  if (object.has("mesh")) {
+    for (const std::string_view field : inline_mesh_fields) {
+      if (object.has(field)) {
+        object.fail_member(field, "expected either mesh or inline positions/uvs/triangles, got both mesh and " +
+                                      std::string(field));
+      }
+    }
+    const JsonField mesh = object.required("mesh");
+    return load_obj_mesh(resolve_against_scene(object.file(), mesh.string()), mesh.path());
+  }
+  if (!object.has("positions")) object.fail_with("expected a mesh or inline positions and triangles, got neither");
+  return read_inline_mesh(object);
+}
+
+Object read_object(const JsonField& object, std::size_t index, const std::vector<Texture>& textures) {
+  object.expect_object_with_fields(
+      {"name", "mesh", "positions", "uvs", "triangles", "color", "texture", "cull", "transform"});
+  Object loaded;
+  // The spec gives objects no default name; the field path is unique and findable.
+  loaded.name = object.has("name") ? object.required("name").string() : "objects[" + std::to_string(index) + "]";
+  loaded.mesh = read_geometry(object);
+  if (const auto color = object.optional("color")) loaded.color = color->vec3(closed_interval(0.0, 1.0));
+  if (const auto texture = object.optional("texture")) loaded.texture = find_texture(*texture, textures);
+  if (const auto cull = object.optional("cull")) loaded.cull = cull->choice<Cull>({{"none", Cull::none}, {"back", Cull::back}});
+  if (const auto transform = object.optional("transform")) loaded.model = read_transform(*transform);
+  return loaded;
+}
+
+}  // namespace
+
+std::vector<Object> read_objects(const JsonField& objects, const std::vector<Texture>& textures) {
+  std::vector<Object> loaded;
+  const auto elements = objects.elements();
+  for (std::size_t i = 0; i < elements.size(); ++i) loaded.push_back(read_object(elements[i], i, textures));
+  return loaded;
+}
+
+}  // namespace spanlight::scene::detail

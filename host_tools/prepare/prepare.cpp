@@ -33,17 +33,12 @@ Wrap to_wrap(scene::Wrap w) {
 }  // namespace
 
 Mat4Block to_mat4_block(const glm::dmat4& m) {
-  double largest = 0.0;
+  double col_major[16];
   for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) largest = std::max(largest, std::fabs(m[c][r]));
-  // The largest entry gets 28 significant bits (< 2^29 after rounding); 16 <= frac <= 60.
-  int frac = 60;
-  if (largest > 0.0) frac = std::min(60, 28 - static_cast<int>(std::ceil(std::log2(largest + 1e-300))));
-  if (frac < 16) throw PrepareError("a transform has an entry of " + std::to_string(largest) + ", beyond the supported 2^12");
-  Mat4Block out{};
-  out.frac_bits = static_cast<std::int8_t>(frac);
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r) out.m[c * 4 + r] = static_cast<std::int32_t>(std::llround(std::ldexp(m[c][r], frac)));
+    for (int r = 0; r < 4; ++r) col_major[c * 4 + r] = m[c][r];
+  const Mat4Block out = fixedpoint::mat4_block_from_doubles(col_major);
+  // Below 16 fraction bits an entry is >= 2^13 and clip coordinates could leave Q31.32.
+  if (out.frac_bits < 16) throw PrepareError("a transform has an entry beyond the supported 2^12");
   return out;
 }
 

@@ -27,7 +27,10 @@ constexpr std::int64_t mul_shift_wide(std::int64_t a, std::int32_t b, int s) {
   const std::int64_t lo = static_cast<std::int64_t>(static_cast<std::uint32_t>(a));  // [0, 2^32)
   const std::int64_t high_part = hi * b;  // |hi*b| < 2^62
   const std::int64_t low_part = lo * b;   // |lo*b| < 2^63
-  return static_cast<std::int64_t>(static_cast<std::uint64_t>(high_part) << (32 - s)) + (low_part >> s);
+  // Add as unsigned (modulo 2^64, converted back exactly in C++20): the sum fits int64, but
+  // the high term alone may not (a = INT64_MIN + 1, b = -1, s = 0: it is 2^63), so a signed add could overflow.
+  return static_cast<std::int64_t>((static_cast<std::uint64_t>(high_part) << (32 - s)) +
+                                   static_cast<std::uint64_t>(low_part >> s));
 }
 
 // Clamp an int64 into int32 range: saturation, never wrap.

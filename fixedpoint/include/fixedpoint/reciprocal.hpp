@@ -1,16 +1,19 @@
 // Reciprocal by table lookup and Newton-Raphson, the per-span divide of the
 // pipeline. 1/d is returned as a normalised mantissa and a shift:
 //
-//     1/d ~= mantissa * 2^-shift,   mantissa in [2^30, 2^31]  (Q1.31 of 1/m)
+//     1/d ~= mantissa * 2^-shift,   mantissa in [2^30 * (1 - e), 2^31)  (Q1.31 of 1/m)
+//
+// with e the relative error bound below: Newton steps round down, so for m near
+// 2^32 the mantissa can end just under 2^30; it is always < 2^31 (fits int32).
 //
 // Steps: normalise d with CLZ so m = d << n lies in [2^31, 2^32) (the value
 // m/2^31 in [1, 2)); the top TableBits bits after the leading one index a
 // constexpr table of 1/midpoint (16-bit entries, in flash); each Newton step
 // y <- y * (2 - m*y) squares the relative error.
 //
-// Relative error bounds (proved in tests/fixedpoint/test_reciprocal.cpp, which
-// measures them exhaustively over every 16-bit input and on 2^20 random
-// 32-bit ones, and printed by `spanlight_reciprocal_table`):
+// Relative error bounds (derived in docs/reciprocal.md; tests/fixedpoint/test_reciprocal.cpp
+// checks them exhaustively over every 16-bit input and on 2^20 random
+// 32-bit ones, and `spanlight_reciprocal_table` prints the measured maxima):
 //   0 steps: seed error  <= 2^-(B+1) + 2^-16 (half interval / midpoint, entry rounding)
 //   1 step : e1 <= e0^2 + 2^-29 (truncation in the two 32-bit products)
 //   2 steps: e2 <= e1^2 + 2^-29
@@ -24,7 +27,7 @@
 namespace fixedpoint {
 
 struct Reciprocal {
-  std::uint32_t mantissa;  // in [2^30, 2^31]
+  std::uint32_t mantissa;  // in [2^30 * (1 - e), 2^31), e = the error bound above
   int shift;               // 1/d ~= mantissa / 2^shift
 };
 
@@ -73,7 +76,8 @@ constexpr Reciprocal reciprocal(std::uint32_t d) {
 }
 
 // 1/d for 64-bit d > 0: the top 32 significant bits are used (relative error
-// of the truncation < 2^-31, below every table's own error).
+// of the truncation < 2^-31, below every table's own error; with e the bound
+// above, the error against the exact 1/d is <= (e + 2^-31) / (1 - 2^-31)).
 template <int TableBits, int NewtonSteps>
 constexpr Reciprocal reciprocal(std::uint64_t d) {
   const int n = clz64(d);

@@ -1,0 +1,68 @@
+// bits.hpp: mul_shift_wide against the exact __int128 floor, and the small helpers.
+#include <catch2/catch.hpp>
+
+#include <cstdint>
+#include <random>
+
+#include "fixedpoint/bits.hpp"
+
+namespace {
+
+using i128 = __int128;
+
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int random_cases = 1 << 16;
+#else
+constexpr int random_cases = 1 << 20;
+#endif
+
+// floor(a * b / 2^s); >> on a negative __int128 is arithmetic, i.e. floor.
+i128 exact_mul_shift(std::int64_t a, std::int32_t b, int s) { return (static_cast<i128>(a) * b) >> s; }
+
+bool fits_int64(i128 v) { return v >= INT64_MIN && v <= INT64_MAX; }
+
+}  // namespace
+
+TEST_CASE("mul_shift_wide equals the exact floored product whenever it fits int64", "[bits]") {
+  std::mt19937_64 rng(0x5EED0010u);
+  int checked = 0;
+  for (int i = 0; i < random_cases; ++i) {
+    // Random bit lengths for a, so that most products fit after the shift.
+    const int length = static_cast<int>(rng() % 64u);
+    const auto a = static_cast<std::int64_t>(rng()) >> (63 - length);
+    std::int32_t b = static_cast<std::int32_t>(static_cast<std::uint32_t>(rng()));
+    if (b == INT32_MIN) b = INT32_MIN + 1;  // the documented domain is |b| < 2^31
+    const int s = static_cast<int>(rng() % 33u);
+    const i128 expected = exact_mul_shift(a, b, s);
+    if (!fits_int64(expected)) continue;
+    ++checked;
+    const std::int64_t got = fixedpoint::mul_shift_wide(a, b, s);
+    if (got != static_cast<std::int64_t>(expected)) {  // report only failures: Catch per-check cost dominates
+      INFO("a=" << a << " b=" << b << " s=" << s);
+      REQUIRE(got == static_cast<std::int64_t>(expected));
+    }
+  }
+  REQUIRE(checked > random_cases / 4);
+}
+
+TEST_CASE("mul_shift_wide corner cases", "[bits]") {
+  // The high term alone is 2^63 here though the result fits (the fixed signed-overflow case).
+  REQUIRE(fixedpoint::mul_shift_wide(INT64_MIN + 1, -1, 0) == INT64_MAX);
+  REQUIRE(fixedpoint::mul_shift_wide(INT64_MIN, 1, 0) == INT64_MIN);
+  REQUIRE(fixedpoint::mul_shift_wide(INT64_MIN, INT32_MAX, 32) ==
+          static_cast<std::int64_t>(exact_mul_shift(INT64_MIN, INT32_MAX, 32)));
+  REQUIRE(fixedpoint::mul_shift_wide(INT64_MAX, -INT32_MAX, 32) ==
+          static_cast<std::int64_t>(exact_mul_shift(INT64_MAX, -INT32_MAX, 32)));
+  REQUIRE(fixedpoint::mul_shift_wide(-1, 1, 32) == -1);  // floor, not truncation
+  REQUIRE(fixedpoint::mul_shift_wide(-1, 1, 0) == -1);
+  REQUIRE(fixedpoint::mul_shift_wide(0xFFFFFFFFll, 0x7FFFFFFF, 32) == 0x7FFFFFFE);
+  static_assert(fixedpoint::mul_shift_wide(std::int64_t{1} << 40, 3, 8) == std::int64_t{3} << 32);
+}
+
+TEST_CASE("bit helpers", "[bits]") {
+  static_assert(fixedpoint::bit_length(0) == 0 && fixedpoint::bit_length(1) == 1 && fixedpoint::bit_length(UINT64_MAX) == 64);
+  static_assert(fixedpoint::clz32(1) == 31 && fixedpoint::clz64(std::uint64_t{1} << 40) == 23);
+  static_assert(fixedpoint::asr64(-3, 1) == -2);
+  static_assert(fixedpoint::saturate32(std::int64_t{1} << 40) == INT32_MAX && fixedpoint::saturate32(INT64_MIN) == INT32_MIN);
+  SUCCEED();
+}

@@ -1,0 +1,38 @@
+# spanlight_add_test(NAME name SOURCES a.cpp ... LIBS lib ...)
+# Builds a Catch2 test executable and its ASan+UBSan twin (name_asan), and
+# registers both with CTest, one ctest entry per Catch2 test case.
+include(Catch)
+
+function(spanlight_add_test)
+  cmake_parse_arguments(T "" "NAME" "SOURCES;LIBS;ASAN_LIBS" ${ARGN})
+  add_executable(${T_NAME} ${T_SOURCES})
+  target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} Catch2::Catch2WithMain)
+  spanlight_warnings(${T_NAME})
+  catch_discover_tests(${T_NAME} TEST_PREFIX "${T_NAME}: " PROPERTIES LABELS host)
+
+  # The sanitizer twin: same sources; libraries listed in ASAN_LIBS (the
+  # *_asan builds of our own libraries) replace LIBS so all of our code is instrumented.
+  if(T_ASAN_LIBS)
+    set(asan_libs ${T_ASAN_LIBS})
+  else()
+    set(asan_libs ${T_LIBS})
+  endif()
+  add_executable(${T_NAME}_asan ${T_SOURCES})
+  target_link_libraries(${T_NAME}_asan PRIVATE ${asan_libs} Catch2::Catch2WithMain)
+  target_compile_options(${T_NAME}_asan PRIVATE ${SPANLIGHT_SANITIZE_FLAGS} -O1)
+  target_link_options(${T_NAME}_asan PRIVATE ${SPANLIGHT_SANITIZE_FLAGS})
+  spanlight_warnings(${T_NAME}_asan)
+  catch_discover_tests(${T_NAME}_asan TEST_PREFIX "${T_NAME}_asan: " PROPERTIES LABELS asan
+                       ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;UBSAN_OPTIONS=print_stacktrace=1")
+endfunction()
+
+# spanlight_add_library_with_asan(name TYPE sources...): a static library plus
+# name_asan, the same sources built with the sanitizers, for the test twins.
+function(spanlight_add_library_with_asan name)
+  add_library(${name} STATIC ${ARGN})
+  add_library(${name}_asan STATIC ${ARGN})
+  target_compile_options(${name}_asan PRIVATE ${SPANLIGHT_SANITIZE_FLAGS} -O1)
+  target_link_options(${name}_asan INTERFACE ${SPANLIGHT_SANITIZE_FLAGS})
+  spanlight_warnings(${name})
+  spanlight_warnings(${name}_asan)
+endfunction()

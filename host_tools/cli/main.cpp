@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   std::map<std::string, spanlight::cli::Command> commands{
       {"render", spanlight::cli::add_render_command(app)},
       {"compare", spanlight::cli::add_compare_command(app)},
+      {"bake", spanlight::cli::add_bake_command(app)},
   };
   try {
     app.parse(argc, argv);

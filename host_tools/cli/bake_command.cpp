@@ -1,0 +1,47 @@
+// spanlight bake SCENE.json --out DIR [knobs]: C++ sources for a firmware build.
+#include <cstdio>
+#include <string>
+
+#include "bake/bake.hpp"
+#include "cli/commands.hpp"
+#include "cli/knobs.hpp"
+#include "cli/load.hpp"
+
+namespace spanlight::cli {
+namespace {
+
+struct BakeArgs {
+  std::string scene;
+  std::string out;
+  KnobArgs knobs;
+};
+
+int run_bake(const BakeArgs& a) {
+  const std::optional<scene::Scene> scene = load_or_report(a.scene);
+  if (!scene) return exit_bad_input;
+  const auto prepared = prepare_or_report(*scene);
+  if (!prepared) return exit_bad_input;
+  try {
+    bake::write_baked_scene(*prepared, to_fixed_options(a.knobs), scene->name, a.out);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return exit_bad_input;
+  }
+  const bake::SceneFeatures f = bake::features_of(prepared->scene);
+  std::printf("baked %s into %s: %d projector(s), shadows %s%s, bilinear %s\n", scene->name.c_str(), a.out.c_str(),
+              f.projectors, f.shadows ? "on" : "off", f.pcf ? " (pcf2x2)" : "", f.bilinear ? "on" : "off");
+  return exit_ok;
+}
+
+}  // namespace
+
+Command add_bake_command(CLI::App& app) {
+  auto args = std::make_shared<BakeArgs>();
+  CLI::App* cmd = app.add_subcommand("bake", "write a scene as C++ sources (baked_scene.cpp, baked_config.hpp) for firmware");
+  cmd->add_option("scene", args->scene, "scene file")->required();
+  cmd->add_option("--out", args->out, "output folder")->required();
+  add_knob_options(*cmd, args->knobs);
+  return [args] { return run_bake(*args); };
+}
+
+}  // namespace spanlight::cli

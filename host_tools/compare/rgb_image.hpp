@@ -1,0 +1,21 @@
+// Internal: getting both kinds of input into OpenImageIO as 3-channel images.
+#pragma once
+
+#include <filesystem>
+
+#include <OpenImageIO/imagebuf.h>
+
+#include "compare/compare.hpp"
+
+namespace spanlight::compare {
+
+// Reads a file as RGB (grey expanded, alpha dropped). Throws CompareError.
+OIIO::ImageBuf read_rgb(const std::filesystem::path& file);
+
+// Copies an in-memory RGB8 image into an ImageBuf. Throws CompareError on a bad length.
+OIIO::ImageBuf to_image_buf(Rgb8View view);
+
+// Throws CompareError unless both images have the same size.
+void require_same_size(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b);
+
+}  // namespace spanlight::compare

@@ -1,0 +1,9 @@
+// Stack high-water mark from the paint the reset code laid over the stack.
+#include "hal/hal.hpp"
+#include "startup/stack_watermark.h"
+
+namespace spanlight::hal {
+
+std::size_t stack_peak_bytes() { return spanlight_stack_peak_bytes(); }
+
+}  // namespace spanlight::hal

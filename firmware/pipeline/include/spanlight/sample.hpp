@@ -28,11 +28,16 @@ struct Texel16 {
   std::uint32_t r, g, b;  // 8-bit channels scaled by a weight (sum of weights 2^16 at most)
 };
 
+// Row start of texel row `y_from_bottom` (already wrapped into the image).
+inline const std::uint8_t* texel_row(const TextureData& tex, std::int32_t y_from_bottom) {
+  return tex.rgb + static_cast<std::uint32_t>(tex.height - 1 - y_from_bottom) * tex.width * 3u;
+}
+
 inline Rgb8 fetch(const TextureData& tex, std::int32_t x, std::int32_t y_from_bottom, Wrap wrap) {
   const std::int32_t xi = wrap_index(x, tex.width, wrap);
   const std::int32_t yi = wrap_index(y_from_bottom, tex.height, wrap);
   if (xi < 0 || yi < 0) return {0, 0, 0};
-  const std::uint8_t* p = tex.rgb + (static_cast<std::uint32_t>(tex.height - 1 - yi) * tex.width + static_cast<std::uint32_t>(xi)) * 3u;
+  const std::uint8_t* p = texel_row(tex, yi) + static_cast<std::uint32_t>(xi) * 3u;
   return {p[0], p[1], p[2]};
 }
 
@@ -49,10 +54,30 @@ inline Rgb8 sample_nearest(const TextureData& tex, std::int32_t u, std::int32_t 
 inline Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
   const std::int32_t half = frac > 0 ? (1 << (frac - 1)) : 0;  // move to texel centres
   const std::int32_t x = u - half, y = v - half;
-  const std::int32_t x0 = x >> frac, y0 = y >> frac;
+  std::int32_t x0 = x >> frac, y0 = y >> frac;
   const std::uint32_t fx = weight8(x, frac), fy = weight8(y, frac);
-  const Rgb8 c00 = fetch(tex, x0, y0, wrap), c10 = fetch(tex, x0 + 1, y0, wrap);
-  const Rgb8 c01 = fetch(tex, x0, y0 + 1, wrap), c11 = fetch(tex, x0 + 1, y0 + 1, wrap);
+  std::int32_t x1 = x0 + 1, y1 = y0 + 1;
+  Rgb8 c00, c10, c01, c11;
+  if (wrap != Wrap::border || (x0 >= 0 && y0 >= 0 && x1 < tex.width && y1 < tex.height)) {
+    // Fast path: wrap each axis once, then four direct reads.
+    x0 = wrap_index(x0, tex.width, wrap);
+    x1 = wrap_index(x1, tex.width, wrap);
+    y0 = wrap_index(y0, tex.height, wrap);
+    y1 = wrap_index(y1, tex.height, wrap);
+    const std::uint8_t* row0 = texel_row(tex, y0);
+    const std::uint8_t* row1 = texel_row(tex, y1);
+    const std::uint32_t i0 = static_cast<std::uint32_t>(x0) * 3u, i1 = static_cast<std::uint32_t>(x1) * 3u;
+    c00 = {row0[i0], row0[i0 + 1], row0[i0 + 2]};
+    c10 = {row0[i1], row0[i1 + 1], row0[i1 + 2]};
+    c01 = {row1[i0], row1[i0 + 1], row1[i0 + 2]};
+    c11 = {row1[i1], row1[i1 + 1], row1[i1 + 2]};
+  } else {
+    // Border at the image's edge: texels outside are black, one check each.
+    c00 = fetch(tex, x0, y0, wrap);
+    c10 = fetch(tex, x1, y0, wrap);
+    c01 = fetch(tex, x0, y1, wrap);
+    c11 = fetch(tex, x1, y1, wrap);
+  }
   const std::uint32_t w00 = (256 - fx) * (256 - fy), w10 = fx * (256 - fy), w01 = (256 - fx) * fy, w11 = fx * fy;
   // Sum of weights is 2^16; round to nearest on the way back to 8 bits.
   auto blend = [&](std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {

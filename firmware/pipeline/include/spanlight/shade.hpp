@@ -74,6 +74,7 @@ template <typename F, int P>
 inline Rgb8 surface_colour(const ObjectData& object, const TextureData* texture, const PointValues<P>& v) {
   if (texture == nullptr) return {object.color[0], object.color[1], object.color[2]};
   const Rgb8 t = sample<F::bilinear>(*texture, v.u, v.v, object.uv_frac_bits, texture->wrap);
+  if ((object.color[0] & object.color[1] & object.color[2]) == 255) return t;  // white: mul255 is the identity
   return {mul255(object.color[0], t.r), mul255(object.color[1], t.g), mul255(object.color[2], t.b)};
 }
 

@@ -73,8 +73,11 @@ int spanlight::hal::app_main(Args args) {
     log_line(LogLine() << "render_baked: cannot write " << out);
     return 1;
   }
+  // Covered pixels: those the depth pass wrote, for "instructions per covered pixel".
+  std::uint32_t covered = 0;
+  for (const baked::Depth d : depth) covered += d != depth_clear(baked::precision.depth_bits) ? 1u : 0u;
   log_line(LogLine() << "render_baked: " << baked::scene_name << " " << baked::width << "x" << baked::height
-                     << " in " << cost.elapsed() << " " << CostCounter::unit() << ", stack peak "
-                     << stack_peak_bytes() << " bytes -> " << out);
+                     << " in " << cost.elapsed() << " " << CostCounter::unit() << ", covered " << covered
+                     << " pixels, stack peak " << stack_peak_bytes() << " bytes -> " << out);
   return 0;
 }

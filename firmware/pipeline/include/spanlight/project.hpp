@@ -1,7 +1,8 @@
 // Stage 3a, the perspective divide: clip space to snapped window coordinates.
-// One reciprocal per vertex (12-bit table, two Newton steps: relative error
-// below 2^-27, so a 4096-px-wide window lands within 2^-7 subpixel before the
-// rounding to 1/256 px).
+// One reciprocal per vertex (8-bit table, two Newton steps: relative error
+// below 2^-28.9, docs/reciprocal.md — as good as a 12-bit table and 7.5 KB
+// less flash), so a 4096-px-wide window lands within 2^-8 subpixel before the
+// rounding to 1/256 px.
 #pragma once
 
 #include <cstdint>
@@ -31,7 +32,7 @@ struct VertexDivider {
     if (w < 1) w = 1;  // w >= 0 after near and far clipping; w == 0 only at the eye itself
     const int excess = fixedpoint::bit_length(static_cast<std::uint64_t>(w)) - 28;
     k = excess > 0 ? excess : 0;
-    rcp = fixedpoint::reciprocal<12, 2>(static_cast<std::uint32_t>(w >> k));
+    rcp = fixedpoint::reciprocal<8, 2>(static_cast<std::uint32_t>(w >> k));
   }
   // (numerator / w) * 2^32, numerator >> k < 2^31 when |numerator| <= 7*w.
   constexpr std::int64_t ratio_q32(std::int64_t numerator) const {

@@ -3,14 +3,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "prepare/runtime_reciprocal.hpp"
 #include "spanlight/render.hpp"
 
 namespace spanlight::prepare {
 namespace {
 
-template <PixelFormat Format, int TableBits, int NewtonSteps>
+template <PixelFormat Format>
 FixedFrame render_with(const PreparedStorage& prepared, const Precision& precision) {
-  using F = HostFeatures<Format, TableBits, NewtonSteps>;
+  using F = HostFeaturesWith<Format, RuntimeReciprocal>;  // the table is picked at run time
   using Color = ColorTraits<Format>;
   const PreparedScene& scene = prepared.scene;
   const std::size_t pixels = std::size_t{scene.width} * scene.height;
@@ -50,32 +51,12 @@ FixedFrame render_with(const PreparedStorage& prepared, const Precision& precisi
   return frame;
 }
 
-template <PixelFormat Format, int TableBits>
-FixedFrame dispatch_steps(const PreparedStorage& p, const FixedOptions& o) {
-  switch (o.newton_steps) {
-    case 0: return render_with<Format, TableBits, 0>(p, o.precision);
-    case 1: return render_with<Format, TableBits, 1>(p, o.precision);
-    case 2: return render_with<Format, TableBits, 2>(p, o.precision);
-    default: throw std::invalid_argument("newton steps must be 0, 1 or 2");
-  }
-}
-
-template <PixelFormat Format>
-FixedFrame dispatch_table(const PreparedStorage& p, const FixedOptions& o) {
-  switch (o.table_bits) {
-    case 6: return dispatch_steps<Format, 6>(p, o);
-    case 8: return dispatch_steps<Format, 8>(p, o);
-    case 10: return dispatch_steps<Format, 10>(p, o);
-    case 12: return dispatch_steps<Format, 12>(p, o);
-    default: throw std::invalid_argument("reciprocal table bits must be 6, 8, 10 or 12");
-  }
-}
-
 }  // namespace
 
 FixedFrame render_fixed(const PreparedStorage& prepared, const FixedOptions& options) {
-  if (options.format == PixelFormat::rgb565) return dispatch_table<PixelFormat::rgb565>(prepared, options);
-  return dispatch_table<PixelFormat::rgb888>(prepared, options);
+  const ReciprocalChoice reciprocal(options.table_bits, options.newton_steps);
+  if (options.format == PixelFormat::rgb565) return render_with<PixelFormat::rgb565>(prepared, options.precision);
+  return render_with<PixelFormat::rgb888>(prepared, options.precision);
 }
 
 const char* to_string(PixelFormat format) { return format == PixelFormat::rgb565 ? "rgb565" : "rgb888"; }

@@ -32,9 +32,11 @@ struct Features {
   using reciprocal = Reciprocal;
 };
 
-// The host tools' build: everything on, the table chosen at run time by the caller's template.
+// The host tools' build: everything on, up to four projectors.
+template <PixelFormat Format, typename Reciprocal>
+using HostFeaturesWith = Features<4, true, true, true, Format, Reciprocal>;
 template <PixelFormat Format, int TableBits, int NewtonSteps>
-using HostFeatures = Features<4, true, true, true, Format, TableReciprocal<TableBits, NewtonSteps>>;
+using HostFeatures = HostFeaturesWith<Format, TableReciprocal<TableBits, NewtonSteps>>;
 
 struct Precision {
   std::uint8_t span_log2 = 4;    // a reciprocal every 2^span_log2 pixels; 0 = every pixel

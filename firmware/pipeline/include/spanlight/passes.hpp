@@ -60,7 +60,8 @@ struct LightKernel {
   void object(const ObjectData&) {}
   template <typename V>
   void pixel(std::int32_t i, const V& v) {
-    if (depth_store(v.z, depth_bits) != target.depth[i] || !claim_pixel(target.tie_mask, i)) return;
+    const std::uint32_t d = depth_store(v.z, depth_bits);
+    if (d == depth_clear(depth_bits) || d != target.depth[i] || !claim_pixel(target.tie_mask, i)) return;
     Observer::touched(pass_light, i);
     const Rgb8 add = projector_light<F, DepthT>(light, v, projector, depth_bits);
     if ((add.r | add.g | add.b) == 0) return;
@@ -84,7 +85,8 @@ struct ModulateKernel {
   }
   template <typename V>
   void pixel(std::int32_t i, const V& v) {
-    if (depth_store(v.z, depth_bits) != target.depth[i] || !claim_pixel(target.tie_mask, i)) return;
+    const std::uint32_t d = depth_store(v.z, depth_bits);
+    if (d == depth_clear(depth_bits) || d != target.depth[i] || !claim_pixel(target.tie_mask, i)) return;
     Observer::touched(pass_modulate, i);
     typename Color::Storage* p = target.color + i * Color::per_pixel;
     Color::store(p, modulate(Color::load(p), surface_colour<F>(*current, texture, v)));

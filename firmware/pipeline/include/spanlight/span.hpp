@@ -63,6 +63,20 @@ constexpr std::uint64_t texel_delta8(const GroupPoint& a, const GroupPoint& b, i
   return (d * c.projector_texels[group]) >> (proj_frac_bits - 8);  // d < 2^32, size <= 2^12
 }
 
+// A value clamped at +-proj_limit is not the ratio any more, so stepping
+// linearly from it is wrong unless both ends are clamped on the same side
+// (q > 0 along the segment makes each ratio monotonic there: all of it is
+// outside then).
+constexpr bool saturation_breaks_linearity(const GroupPoint& a, const GroupPoint& b) {
+  if (!a.front || !b.front) return false;  // sign changes go per pixel anyway
+  for (int k = 0; k < 3; ++k) {
+    const bool sa = a.value[k] == proj_limit || a.value[k] == -proj_limit;
+    const bool sb = b.value[k] == proj_limit || b.value[k] == -proj_limit;
+    if ((sa || sb) && a.value[k] != b.value[k]) return true;
+  }
+  return false;
+}
+
 constexpr std::int32_t step_of(std::int32_t from, std::int32_t to, std::int32_t length) {
   const std::int32_t delta = to - from;  // both within +-2^30
   return (length & (length - 1)) == 0 ? (delta >> (31 - fixedpoint::clz32(static_cast<std::uint32_t>(length))))
@@ -86,7 +100,7 @@ struct GroupStepper {
     group = g;
     const GroupPoint first = evaluate_group<P, R>(t, a, group, t.edge[1].value_at(c0), t.edge[2].value_at(c0));
     take(first, c0);
-    plan_segment(t, a, c, first, c1);
+    if (c0 < c1) plan_segment(t, a, c, first, c1);  // as advance(): no segment past c1
   }
 
   // Move from `column` to `column + 1` (never past c1).
@@ -115,7 +129,7 @@ struct GroupStepper {
     std::int32_t len = c1 - column < span_len ? c1 - column : span_len;
     for (;;) {  // halve until linear stepping is close enough
       end = evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column + len), t.edge[2].value_at(column + len));
-      if (len == 1 || linear_enough(texel_delta8(from, end, group, c), from.denominator, end.denominator, c.tolerance_log2))
+      if (len == 1 || (!saturation_breaks_linearity(from, end) && linear_enough(texel_delta8(from, end, group, c), from.denominator, end.denominator, c.tolerance_log2)))
         break;
       len = (len + 1) >> 1;
     }

@@ -1,0 +1,187 @@
+// The multipass algorithm's invariants (Segal et al.'s z-equal passes):
+// each light pass and the modulate pass touch exactly the pixels the depth +
+// ambient pass left visible, each exactly once; and the fused single pass
+// gives the same bytes as the multipass.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "pipeline_support.hpp"
+
+namespace pt = spanlight::ptest;
+using spanlight::PixelFormat;
+
+namespace {
+
+struct PassCheck {
+  std::size_t visible = 0;
+  int depth_pass_mismatches = 0;   // touched by the depth pass xor visible
+  int light_pass_mismatches = 0;   // per light pass: pixels not touched exactly once when visible, or touched when not
+  int modulate_mismatches = 0;
+  bool light_events_count_ok = true;
+};
+
+// Splits the observer's log by pass. The light passes run one after the
+// other in projector order (render.hpp) and the observer cannot tell them
+// apart, so pass j is taken as events [j V, (j + 1) V) of the light events,
+// V the visible count: if every pass touches each visible pixel exactly once
+// the split is exact, and any pass that misses or repeats a pixel either
+// changes the total or leaves some chunk that is not a permutation of the
+// visible set.
+PassCheck check_passes(const pt::ObservedFrame& frame, int projectors, int depth_bits) {
+  const std::size_t pixels = frame.depth.size();
+  const std::uint32_t clear = spanlight::depth_clear(depth_bits);
+  std::vector<std::uint8_t> visible(pixels);
+  PassCheck out;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    visible[i] = frame.depth[i] != clear;
+    out.visible += visible[i];
+  }
+  std::vector<int> depth_touches(pixels, 0), modulate_touches(pixels, 0);
+  std::vector<std::int32_t> light_events;
+  for (const auto& [pass, index] : frame.log.events) {
+    const auto i = static_cast<std::size_t>(index);
+    if (pass == spanlight::pass_depth_ambient) ++depth_touches[i];
+    if (pass == spanlight::pass_light) light_events.push_back(index);
+    if (pass == spanlight::pass_modulate) ++modulate_touches[i];
+  }
+  for (std::size_t i = 0; i < pixels; ++i) {
+    out.depth_pass_mismatches += (depth_touches[i] > 0) != (visible[i] != 0);
+    out.modulate_mismatches += modulate_touches[i] != visible[i];
+  }
+  out.light_events_count_ok = light_events.size() == out.visible * static_cast<std::size_t>(projectors);
+  for (int j = 0; j < projectors; ++j) {
+    std::vector<int> touches(pixels, 0);
+    const std::size_t begin = std::min(light_events.size(), out.visible * static_cast<std::size_t>(j));
+    const std::size_t end = std::min(light_events.size(), out.visible * static_cast<std::size_t>(j + 1));
+    for (std::size_t e = begin; e < end; ++e) ++touches[static_cast<std::size_t>(light_events[e])];
+    for (std::size_t i = 0; i < pixels; ++i) out.light_pass_mismatches += touches[i] != visible[i];
+  }
+  return out;
+}
+
+void require_invariant(const spanlight::PreparedScene& scene, const spanlight::Precision& precision) {
+  const pt::ObservedFrame multipass = pt::render_observed(scene, precision);
+  const PassCheck check = check_passes(multipass, scene.projector_count, precision.depth_bits);
+  INFO("visible pixels " << check.visible << ", projectors " << int{scene.projector_count});
+  CHECK(check.visible > 0);
+  CHECK(check.depth_pass_mismatches == 0);
+  CHECK(check.light_events_count_ok);
+  CHECK(check.light_pass_mismatches == 0);
+  CHECK(check.modulate_mismatches == 0);
+
+  // The fused pass resolves the same depth and touches the same pixels.
+  spanlight::Precision fused_precision = precision;
+  fused_precision.fused = true;
+  const pt::ObservedFrame fused = pt::render_observed(scene, fused_precision);
+  CHECK(fused.depth == multipass.depth);
+  std::vector<int> fused_touched(fused.depth.size(), 0);
+  for (const auto& [pass, index] : fused.log.events) {
+    CHECK(pass == spanlight::pass_fused);
+    fused_touched[static_cast<std::size_t>(index)] = 1;
+  }
+  int fused_mismatches = 0;
+  const std::uint32_t clear = spanlight::depth_clear(precision.depth_bits);
+  for (std::size_t i = 0; i < fused.depth.size(); ++i) fused_mismatches += fused_touched[i] != (multipass.depth[i] != clear);
+  CHECK(fused_mismatches == 0);
+}
+
+// The floor of a camera looking down at it crosses the far plane: near the
+// far line, window depths round to the cleared value (all ones) in the depth
+// buffer, so the depth pass does not keep those fragments.
+//
+// Width of that band, to make sure it holds pixel centres: window depth is
+// z_w(d) = f (d - n) / (d (f - n)) at eye depth d, so 1 - z_w = n (f - d) / (d (f - n)),
+// and a fragment stores the clear value when 1 - z_w < 2^-bits, i.e.
+// (f - d) / d < 2^-bits (f - n) / n. With n = 0.01, f = 20 and 16 bits that
+// is d > 20 / 1.0305 = 19.41: 0.6 units of eye depth, which the camera (5
+// units up, looking 14 degrees down) sees across about 0.5 degrees: a row
+// of pixels in a 120-row, 60-degree view. At 24 bits the band is 256 times
+// thinner and usually holds no pixel centre.
+spanlight::scene::Scene far_plane_scene() {
+  auto s = pt::empty_scene(160, 120, {0, 5, 0}, {0, 0, -20}, {0, 1, 0}, 60.0, 0.01, 20.0);
+  s.ambient = glm::dvec3(0.25);
+  s.textures.push_back(pt::texture("white", pt::solid_image(1, 1, {255, 255, 255}), spanlight::scene::Filter::nearest,
+                                   spanlight::scene::Wrap::clamp));
+  s.objects.push_back(pt::quad("floor", {glm::dvec3(-60, 0, 2), glm::dvec3(60, 0, 2), glm::dvec3(60, 0, -60),
+                                         glm::dvec3(-60, 0, -60)},
+                               glm::dvec3(0.8)));
+  s.projectors.push_back(pt::projector({0, 5, 0}, {0, 0, -20}, {0, 1, 0}, 70.0, 0.5, 100.0, 0, glm::dvec3(0.5)));
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("z-equal light and modulate passes touch exactly the visible pixels once, on every shared scene",
+          "[passes]") {
+  for (const char* name : pt::shared_scene_names()) {
+    INFO("scene " << name);
+    const auto loaded = spanlight::scene::load_scene(pt::scene_file(name));
+    const auto prepared = spanlight::prepare::prepare_scene(loaded);
+    spanlight::Precision precision{};
+    require_invariant(prepared->scene, precision);
+  }
+}
+
+TEST_CASE("z-equal passes touch no pixel whose depth stayed cleared, for geometry crossing the far plane",
+          "[passes]") {
+  const auto prepared = spanlight::prepare::prepare_scene(far_plane_scene());
+  for (const std::uint8_t bits : {std::uint8_t{24}, std::uint8_t{16}}) {
+    INFO("depth bits " << int{bits});
+    spanlight::Precision precision{};
+    precision.depth_bits = bits;
+    require_invariant(prepared->scene, precision);
+  }
+}
+
+namespace {
+
+void require_fused_equals_multipass(const spanlight::prepare::PreparedStorage& prepared, PixelFormat format,
+                                    std::uint8_t depth_bits) {
+  spanlight::prepare::FixedOptions options;
+  options.format = format;
+  options.precision.depth_bits = depth_bits;
+  options.precision.fused = false;
+  const auto multipass = spanlight::prepare::render_fixed(prepared, options);
+  options.precision.fused = true;
+  const auto fused = spanlight::prepare::render_fixed(prepared, options);
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i < fused.raw.size(); ++i) differing += fused.raw[i] != multipass.raw[i];
+  INFO("format " << spanlight::prepare::to_string(format) << ", depth bits " << int{depth_bits} << ": "
+                 << differing << " of " << fused.raw.size() << " framebuffer bytes differ");
+  REQUIRE(fused.raw.size() == multipass.raw.size());
+  CHECK(differing == 0);
+  CHECK(fused.depth == multipass.depth);
+}
+
+}  // namespace
+
+TEST_CASE("the fused pass gives the multipass's bytes on every shared scene in rgb888 and rgb565", "[passes]") {
+  for (const char* name : pt::shared_scene_names()) {
+    INFO("scene " << name);
+    const auto loaded = spanlight::scene::load_scene(pt::scene_file(name));
+    const auto prepared = spanlight::prepare::prepare_scene(loaded);
+    for (const PixelFormat format : {PixelFormat::rgb888, PixelFormat::rgb565}) {
+      require_fused_equals_multipass(*prepared, format, 24);
+    }
+  }
+}
+
+TEST_CASE("the fused pass gives the multipass's bytes with 16-bit depth, also where geometry meets the far plane",
+          "[passes]") {
+  const auto prepared = spanlight::prepare::prepare_scene(far_plane_scene());
+  for (const PixelFormat format : {PixelFormat::rgb888, PixelFormat::rgb565}) {
+    require_fused_equals_multipass(*prepared, format, 24);
+    require_fused_equals_multipass(*prepared, format, 16);
+  }
+  // The shared scenes at 16 bits too (rgb888 only: the format does not touch depth).
+  for (const char* name : pt::shared_scene_names()) {
+    INFO("scene " << name);
+    const auto loaded = spanlight::scene::load_scene(pt::scene_file(name));
+    const auto prepared_shared = spanlight::prepare::prepare_scene(loaded);
+    require_fused_equals_multipass(*prepared_shared, PixelFormat::rgb888, 16);
+  }
+}

@@ -60,7 +60,14 @@ std::array<std::uint8_t, 3> heat_map_colour(int lsb) {
 
 bool write_heat_map(const std::filesystem::path& a, const std::filesystem::path& b,
                     const std::filesystem::path& out_png) {
-  return write_heat_map_of(read_rgb(a), read_rgb(b), out_png);
+  const OIIO::ImageBuf image_a = read_rgb(a);
+  const OIIO::ImageBuf image_b = read_rgb(b);
+  try {
+    require_same_size(image_a, image_b);
+  } catch (const CompareError& e) {
+    throw CompareError(a.string() + " and " + b.string() + ": " + e.what());
+  }
+  return write_heat_map_of(image_a, image_b, out_png);
 }
 
 bool write_heat_map(Rgb8View a, Rgb8View b, const std::filesystem::path& out_png) {

@@ -36,8 +36,12 @@ bool write_png_atomically(const std::filesystem::path& path, int width, int heig
     return fail(error, path.string() + ": RGB8 buffer does not hold a " + std::to_string(width) + " x " +
                            std::to_string(height) + " image");
   }
-  const std::filesystem::path temporary = temporary_beside(path);
+  const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::error_code ignored;
+  if (!std::filesystem::is_directory(folder, ignored)) {
+    return fail(error, path.string() + ": folder " + folder.string() + " does not exist");
+  }
+  const std::filesystem::path temporary = temporary_beside(path);
 
   auto output = OIIO::ImageOutput::create("png");  // by format name: the temporary has no .png ending
   if (!output) return fail(error, "no PNG writer: " + OIIO::geterror());

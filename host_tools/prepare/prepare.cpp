@@ -38,7 +38,7 @@ Mat4Block to_mat4_block(const glm::dmat4& m) {
     for (int r = 0; r < 4; ++r) col_major[c * 4 + r] = m[c][r];
   const Mat4Block out = fixedpoint::mat4_block_from_doubles(col_major);
   // Below 16 fraction bits an entry is >= 2^13 and clip coordinates could leave Q31.32.
-  if (out.frac_bits < 16) throw PrepareError("a transform has an entry beyond the supported 2^12");
+  if (out.frac_bits < 16) throw PrepareError("a transform has an entry beyond the supported 2^13");
   return out;
 }
 
@@ -94,6 +94,8 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
       double largest = 0.0;
       for (const glm::dvec2& uv : o.mesh.uvs)
         largest = std::max({largest, std::fabs(uv.x * img.width), std::fabs(uv.y * img.height)});
+      if (!(largest < 536870912.0))  // 2^29: the pipeline's |u| bound (perspective.hpp)
+        throw PrepareError(where + ".uvs: texel coordinate " + std::to_string(largest) + " is beyond the supported 2^29");
       frac = uv_frac_bits_for(largest);
       for (const glm::dvec2& uv : o.mesh.uvs) {
         out->uvs[i].push_back(static_cast<std::int32_t>(std::llround(std::ldexp(uv.x * img.width, frac))));

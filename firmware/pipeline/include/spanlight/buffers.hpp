@@ -69,7 +69,7 @@ inline bool claim_pixel(std::uint8_t* mask, std::int32_t i) {
 constexpr std::uint32_t depth_clear(int depth_bits) { return (1u << depth_bits) - 1u; }
 constexpr std::uint32_t depth_store(std::int32_t z_q30, int depth_bits) {
   const std::uint32_t z = static_cast<std::uint32_t>(z_q30 < 0 ? 0 : z_q30) >> (30 - depth_bits);
-  const std::uint32_t top = depth_clear(depth_bits);
+  const std::uint32_t top = depth_clear(depth_bits) - 1u;  // never the clear value
   return z > top ? top : z;
 }
 

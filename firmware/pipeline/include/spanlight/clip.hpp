@@ -37,10 +37,10 @@ constexpr std::int64_t plane_distance(ClipPlane plane, const Vec4Wide& c, std::i
   switch (plane) {
     case ClipPlane::near: return c.z + c.w;
     case ClipPlane::far: return c.w - c.z;
-    case ClipPlane::left: return guard * c.w + c.x;
-    case ClipPlane::right: return guard * c.w - c.x;
-    case ClipPlane::bottom: return guard * c.w + c.y;
-    case ClipPlane::top: return guard * c.w - c.y;
+    case ClipPlane::left: return guard * (c.w >> 2) + (c.x >> 2);
+    case ClipPlane::right: return guard * (c.w >> 2) - (c.x >> 2);
+    case ClipPlane::bottom: return guard * (c.w >> 2) + (c.y >> 2);
+    case ClipPlane::top: return guard * (c.w >> 2) - (c.y >> 2);
   }
   return 0;
 }
@@ -63,8 +63,8 @@ constexpr std::int32_t crossing(std::int64_t da, std::int64_t db) {
   std::int64_t den = da - db;  // > 0
   const int excess = fixedpoint::bit_length(static_cast<std::uint64_t>(den)) - 32;
   if (excess > 0) {
-    num >>= excess;
-    den >>= excess;
+    num >>= excess;                    // rounded down and
+    den = ((den - 1) >> excess) + 1;   // rounded up: t never passes the plane
   }
   return static_cast<std::int32_t>((num << 30) / den);  // num <= den < 2^32: fits
 }

@@ -51,7 +51,9 @@ inline Rgb8 sample_nearest(const TextureData& tex, std::int32_t u, std::int32_t 
   return fetch(tex, u >> frac, v >> frac, wrap);
 }
 
-inline Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+// The four-texel blend before rounding: 8-bit channels times weights summing
+// to 2^16. Projectors keep these bits through the colour multiply.
+inline Texel16 sample16_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
   const std::int32_t half = frac > 0 ? (1 << (frac - 1)) : 0;  // move to texel centres
   const std::int32_t x = u - half, y = v - half;
   std::int32_t x0 = x >> frac, y0 = y >> frac;
@@ -79,11 +81,26 @@ inline Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t
     c11 = fetch(tex, x1, y1, wrap);
   }
   const std::uint32_t w00 = (256 - fx) * (256 - fy), w10 = fx * (256 - fy), w01 = (256 - fx) * fy, w11 = fx * fy;
-  // Sum of weights is 2^16; round to nearest on the way back to 8 bits.
   auto blend = [&](std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {
-    return static_cast<std::uint8_t>((a * w00 + b * w10 + c * w01 + d * w11 + 32768u) >> 16);
+    return a * w00 + b * w10 + c * w01 + d * w11;
   };
   return {blend(c00.r, c10.r, c01.r, c11.r), blend(c00.g, c10.g, c01.g, c11.g), blend(c00.b, c10.b, c01.b, c11.b)};
+}
+
+inline Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+  const Texel16 t = sample16_bilinear(tex, u, v, frac, wrap);
+  auto round8 = [](std::uint32_t c) { return static_cast<std::uint8_t>((c + 32768u) >> 16); };
+  return {round8(t.r), round8(t.g), round8(t.b)};
+}
+
+// Texel channels times 2^16, unrounded when bilinear.
+template <bool Bilinear>
+inline Texel16 sample16(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+  if constexpr (Bilinear) {
+    if (tex.filter == Filter::bilinear) return sample16_bilinear(tex, u, v, frac, wrap);
+  }
+  const Rgb8 t = sample_nearest(tex, u, v, frac, wrap);
+  return {std::uint32_t{t.r} << 16, std::uint32_t{t.g} << 16, std::uint32_t{t.b} << 16};
 }
 
 template <bool Bilinear>

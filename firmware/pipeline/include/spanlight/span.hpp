@@ -78,7 +78,8 @@ constexpr bool saturation_breaks_linearity(const GroupPoint& a, const GroupPoint
 }
 
 constexpr std::int32_t step_of(std::int32_t from, std::int32_t to, std::int32_t length) {
-  const std::int32_t delta = to - from;  // both within +-2^30
+  if (length == 1) return 0;  // never applied: the segment's end is taken as is
+  const std::int32_t delta = to - from;  // both within +-2^30, and not -+2^30 both when length > 1
   return (length & (length - 1)) == 0 ? (delta >> (31 - fixedpoint::clz32(static_cast<std::uint32_t>(length))))
                                       : delta / length;
 }

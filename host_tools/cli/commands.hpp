@@ -16,5 +16,7 @@ inline constexpr int exit_bad_input = 2;
 Command add_render_command(CLI::App& app);
 Command add_compare_command(CLI::App& app);
 Command add_bake_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
+Command add_analyze_command(CLI::App& app);
 
 }  // namespace spanlight::cli

@@ -1,0 +1,106 @@
+// spanlight sweep SCENE.json --out DIR [grid and measurement options]
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/load.hpp"
+#include "prepare/prepare.hpp"
+#include "sweep/qemu_bench.hpp"
+#include "sweep/report_files.hpp"
+#include "sweep/report_plots.hpp"
+#include "sweep/report_tables.hpp"
+#include "sweep/sweep_run.hpp"
+
+namespace spanlight::cli {
+namespace {
+
+struct SweepArgs {
+  std::string scene, out;
+  std::vector<int> spans{1, 2, 4, 8, 16, 32}, tolerances{3}, table_bits{6, 8, 10, 12}, newton{0, 1}, depth_bits{16, 24};
+  std::vector<std::string> modes{"multipass", "fused"}, filters{"all"};
+  std::string format = "rgb888", qemu_grid = "cost", firmware_dir, runner;
+  std::vector<std::string> cpus{"cortex-m7", "cortex-m0plus"};
+  int repeats = 3, jobs = 2, pictures = 4;
+  bool no_passes = false, quiet = false;
+};
+
+sweep::SweepOptions to_options(const SweepArgs& a) {
+  sweep::SweepOptions o;
+  o.grid.spans = a.spans;
+  o.grid.tolerances = a.tolerances;
+  o.grid.table_bits = a.table_bits;
+  o.grid.newton = a.newton;
+  o.grid.depth_bits = a.depth_bits;
+  o.grid.fused.clear();
+  for (const std::string& m : a.modes) o.grid.fused.push_back(m == "fused");
+  o.grid.filters.clear();  // empty: the scene's distinct choices
+  for (const std::string& f : a.filters)
+    if (f != "all") o.grid.filters.push_back(sweep::filter_from_string(f));
+  o.format = a.format == "rgb565" ? PixelFormat::rgb565 : PixelFormat::rgb888;
+  o.host_repeats = a.repeats;
+  o.qemu = a.qemu_grid == "none" ? sweep::QemuGrid::none : a.qemu_grid == "full" ? sweep::QemuGrid::full : sweep::QemuGrid::cost;
+  o.cpus = a.cpus;
+  o.jobs = a.jobs;
+  o.passes = !a.no_passes;
+  o.firmware_dir = a.firmware_dir.empty() ? sweep::default_build_dir() : std::filesystem::path(a.firmware_dir);
+  o.runner = a.runner.empty() ? sweep::default_runner() : std::filesystem::path(a.runner);
+  return o;
+}
+
+int run_sweep_command(const SweepArgs& a) {
+  const std::optional<scene::Scene> scene = load_or_report(a.scene);
+  if (!scene) return exit_bad_input;
+  if (!prepare_or_report(*scene)) return exit_bad_input;  // reports a scene the fixed formats cannot hold
+  const sweep::SweepOptions options = to_options(a);
+  sweep::Progress progress(stderr, a.quiet);
+  const sweep::SweepResult result = sweep::run_sweep(*scene, options, progress);
+  for (const std::string& note : result.notes) std::fprintf(stderr, "note: %s\n", note.c_str());  // also when quiet
+  sweep::write_report(a.out, *scene, result, options.format, static_cast<std::size_t>(a.pictures));
+
+  std::printf("swept %s: %zu configurations in %.0f s -> %s/{sweep.csv,report.html,front.md}\n", result.scene_name.c_str(),
+              result.rows.size(), result.seconds, a.out.c_str());
+  for (sweep::CostAxis axis : {sweep::CostAxis::m7, sweep::CostAxis::m0plus, sweep::CostAxis::host}) {
+    if (!sweep::has_cost(result, axis)) continue;
+    std::printf("%s: %zu point(s) on the front. %s\n", sweep::axis_name(axis), sweep::front_rows(result, axis).size(),
+                sweep::default_place(result, axis).c_str());
+  }
+  return exit_ok;
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& app) {
+  auto a = std::make_shared<SweepArgs>();
+  CLI::App* cmd = app.add_subcommand("sweep", "render a scene over a grid of knobs; record accuracy, cost and memory");
+  cmd->add_option("scene", a->scene, "scene file")->required();
+  cmd->add_option("--out", a->out, "output folder (sweep.csv, report.html, front.md, SVG plots, images/)")->required();
+  cmd->add_option("--spans", a->spans, "span lengths in pixels")->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}))->delimiter(',');
+  cmd->add_option("--tolerances", a->tolerances, "span tolerances (2^-N texel; 0: never shorten)")->check(CLI::Range(0, 10))->delimiter(',');
+  cmd->add_option("--table-bits", a->table_bits, "reciprocal table sizes")->check(CLI::IsMember({6, 8, 10, 12}))->delimiter(',');
+  cmd->add_option("--newton", a->newton, "Newton steps (the firmware bench has 0 and 1)")->check(CLI::IsMember({0, 1, 2}))->delimiter(',');
+  cmd->add_option("--depth-bits", a->depth_bits, "depth bits")->check(CLI::IsMember({16, 24}))->delimiter(',');
+  cmd->add_option("--modes", a->modes, "multipass and/or fused")->check(CLI::IsMember({"multipass", "fused"}))->delimiter(',');
+  cmd->add_option("--filters", a->filters,
+                  "texture filters: scene (as the scene says), nearest or bilinear (forced on every texture), "
+                  "all (scene plus each forced filter that changes the scene)")
+      ->check(CLI::IsMember({"all", "scene", "nearest", "bilinear"}))->delimiter(',');
+  cmd->add_option("--format", a->format, "framebuffer format (the scene's sweep_bench is built as baked)")
+      ->check(CLI::IsMember({"rgb888", "rgb565"}));
+  cmd->add_option("--repeats", a->repeats, "host renders per configuration; the fastest counts")->check(CLI::Range(1, 50));
+  cmd->add_option("--qemu-grid", a->qemu_grid,
+                  "QEMU runs: cost (table bits 8 and depth 24 only, reused for the rest), full, or none")
+      ->check(CLI::IsMember({"cost", "full", "none"}));
+  cmd->add_option("--cpus", a->cpus, "QEMU targets")->check(CLI::IsMember({"cortex-m7", "cortex-m0plus"}))->delimiter(',');
+  cmd->add_option("--jobs", a->jobs, "QEMU runs side by side")->check(CLI::Range(1, 64));
+  cmd->add_option("--firmware-dir", a->firmware_dir,
+                  "build tree holding firmware-<cpu>/bin/sweep_bench_<scene>.elf and the QEMU plugin "
+                  "(default: the build tree of this binary)");
+  cmd->add_option("--qemu-runner", a->runner, "run_on_qemu.sh (default: the one in this binary's source tree)");
+  cmd->add_option("--pictures", a->pictures, "front points shown as fixed/float/difference images")->check(CLI::Range(0, 32));
+  cmd->add_flag("--no-passes", a->no_passes, "skip the per-pass count of the default configuration");
+  cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
+  return [a] { return run_sweep_command(*a); };
+}
+
+}  // namespace spanlight::cli

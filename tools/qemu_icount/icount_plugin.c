@@ -1,7 +1,7 @@
 /* spanlight_icount: a QEMU TCG plugin that counts the guest instructions executed inside
  * measured regions, exactly.
  *
- *   -plugin libspanlight_icount.so,begin=0xADDR,end=0xADDR,out=FILE
+ *   -plugin libspanlight_icount.so,begin=0xADDR,end=0xADDR,out=FILE[,profile=FILE]
  *
  * begin/end are the addresses of spanlight_measure_begin / spanlight_measure_end (the runner
  * looks them up with nm; a Thumb bit is ignored). Every executed instruction adds 1 to a
@@ -16,6 +16,10 @@
  *   spanlight-instructions: <sum over all regions>
  *   spanlight-regions: <number of completed regions>
  *   spanlight-region: <count>        one line per region, the first 1024
+ *
+ * With profile=FILE it also counts each instruction address inside the regions (code below
+ * 4 MB, where the mps2 boards keep it) and writes "ADDRESS COUNT" lines, one per executed
+ * instruction, for tools/qemu_icount/profile_on_qemu.sh to attribute to source lines.
  */
 #include "qemu-plugin.h"
 
@@ -39,12 +43,23 @@ static uint64_t total;
 static uint64_t region_count;
 static uint64_t region_sizes[kRecordedRegions];
 
+/* Per-address counts (Thumb instructions are 2-byte aligned): running counts, their
+ * snapshot at a region's begin, and the sum over regions. */
+enum { kProfiledBytes = 4 << 20, kProfileSlots = kProfiledBytes / 2 };
+static const char *profile_path;
+static uint64_t *address_counts;
+static uint64_t *address_snapshot;
+static uint64_t *address_profile;
+
 static void on_begin(unsigned int vcpu_index, void *userdata) {
   (void)vcpu_index;
   (void)userdata;
   if (!inside_region) { /* regions do not nest: a second begin is ignored */
     inside_region = 1;
     region_start = executed;
+    if (address_counts != NULL) {
+      memcpy(address_snapshot, address_counts, sizeof(uint64_t) * kProfileSlots);
+    }
   }
 }
 
@@ -59,6 +74,11 @@ static void on_end(unsigned int vcpu_index, void *userdata) {
     }
     ++region_count;
     inside_region = 0;
+    if (address_counts != NULL) {
+      for (size_t i = 0; i < kProfileSlots; ++i) {
+        address_profile[i] += address_counts[i] - address_snapshot[i];
+      }
+    }
   }
 }
 
@@ -70,6 +90,9 @@ static void on_translate(qemu_plugin_id_t id, struct qemu_plugin_tb *tb) {
     struct qemu_plugin_insn *insn = qemu_plugin_tb_get_insn(tb, i);
     qemu_plugin_register_vcpu_insn_exec_inline(insn, QEMU_PLUGIN_INLINE_ADD_U64, &executed, 1);
     const uint64_t address = qemu_plugin_insn_vaddr(insn);
+    if (address_counts != NULL && address < kProfiledBytes) {
+      qemu_plugin_register_vcpu_insn_exec_inline(insn, QEMU_PLUGIN_INLINE_ADD_U64, &address_counts[address / 2], 1);
+    }
     if (address == begin_address) {
       qemu_plugin_register_vcpu_insn_exec_cb(insn, on_begin, QEMU_PLUGIN_CB_NO_REGS, NULL);
     } else if (address == end_address) {
@@ -89,9 +112,26 @@ static void write_report(FILE *out) {
   }
 }
 
+static void write_profile(void) {
+  FILE *out = fopen(profile_path, "w");
+  if (out == NULL) {
+    fprintf(stderr, "spanlight_icount: cannot write %s\n", profile_path);
+    return;
+  }
+  for (size_t i = 0; i < kProfileSlots; ++i) {
+    if (address_profile[i] != 0) {
+      fprintf(out, "0x%zx %" PRIu64 "\n", i * 2, address_profile[i]);
+    }
+  }
+  fclose(out);
+}
+
 static void on_exit_report(qemu_plugin_id_t id, void *userdata) {
   (void)id;
   (void)userdata;
+  if (profile_path != NULL && address_profile != NULL) {
+    write_profile();
+  }
   if (out_path != NULL) {
     FILE *out = fopen(out_path, "w");
     if (out != NULL) {
@@ -134,6 +174,8 @@ QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_
       have_end = parse_address(value, &end_address);
     } else if ((value = argument_value(argv[i], "out")) != NULL) {
       out_path = value; /* argv stays valid for the plugin's lifetime */
+    } else if ((value = argument_value(argv[i], "profile")) != NULL) {
+      profile_path = value;
     } else {
       fprintf(stderr, "spanlight_icount: unknown argument %s\n", argv[i]);
       return 1;
@@ -142,6 +184,15 @@ QEMU_PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_
   if (!have_begin || !have_end) {
     fprintf(stderr, "spanlight_icount: needs begin=ADDRESS and end=ADDRESS\n");
     return 1;
+  }
+  if (profile_path != NULL) {
+    address_counts = calloc(kProfileSlots, sizeof(uint64_t));
+    address_snapshot = calloc(kProfileSlots, sizeof(uint64_t));
+    address_profile = calloc(kProfileSlots, sizeof(uint64_t));
+    if (address_counts == NULL || address_snapshot == NULL || address_profile == NULL) {
+      fprintf(stderr, "spanlight_icount: out of memory for profile=\n");
+      return 1;
+    }
   }
   qemu_plugin_register_vcpu_tb_trans_cb(id, on_translate);
   qemu_plugin_register_atexit_cb(id, on_exit_report, NULL);

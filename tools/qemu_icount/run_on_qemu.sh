@@ -3,7 +3,7 @@
 # (-icount shift=0) and, given --plugin, the instruction-count plugin.
 #
 #   run_on_qemu.sh [--cpu cortex-m7|cortex-m4|cortex-m0plus | --machine MACHINE]
-#                  [--plugin libspanlight_icount.so] [--count-file FILE]
+#                  [--plugin libspanlight_icount.so] [--count-file FILE] [--profile FILE]
 #                  [--nm arm-none-eabi-nm] [--timeout SECONDS] [--qemu-arg ARG]...
 #                  ELF [APP_ARG]...
 #
@@ -12,15 +12,17 @@
 # the instruction count follows on stdout as
 #   spanlight-instructions: N      (sum over all measured regions)
 #   spanlight-regions: K           and one "spanlight-region: n" line per region
-# and is also kept in --count-file when given. The exit status is the app's.
+# and is also kept in --count-file when given. --profile FILE writes the plugin's per-address
+# counts ("ADDRESS COUNT"; profile_on_qemu.sh reads them). The exit status is the app's.
 set -euo pipefail
 
-usage() { sed -n '2,16s/^# \{0,1\}//p' "$0" >&2; exit 2; }
+usage() { sed -n '2,17s/^# \{0,1\}//p' "$0" >&2; exit 2; }
 
 cpu=cortex-m7
 machine=
 plugin=
 count_file=
+profile=
 nm=arm-none-eabi-nm
 timeout_s=120
 qemu_extra=()
@@ -30,6 +32,7 @@ while [ $# -gt 0 ]; do
     --machine) machine=$2; shift 2 ;;
     --plugin) plugin=$2; shift 2 ;;
     --count-file) count_file=$2; shift 2 ;;
+    --profile) profile=$2; shift 2 ;;
     --nm) nm=$2; shift 2 ;;
     --timeout) timeout_s=$2; shift 2 ;;
     --qemu-arg) qemu_extra+=("$2"); shift 2 ;;
@@ -75,7 +78,9 @@ if [ -n "$plugin" ]; then
   }
   report=${count_file:-$(mktemp)}
   rm -f "$report"
-  plugin_opts=(-plugin "$(escape_commas "$plugin"),begin=$begin,end=$end,out=$(escape_commas "$report")")
+  plugin_spec="$(escape_commas "$plugin"),begin=$begin,end=$end,out=$(escape_commas "$report")"
+  [ -z "$profile" ] || plugin_spec+=",profile=$(escape_commas "$profile")"
+  plugin_opts=(-plugin "$plugin_spec")
 fi
 
 # No display, monitor, serial or parallel port: stdio belongs to the semihosting console alone.

@@ -52,6 +52,19 @@ constexpr void normalise_projector(const ClipVertex<P>* const (&v)[3], int j, Tr
   }
 }
 
+// What a kernel may ask a walk for (its static may_need_uv / may_need_projectors;
+// both when it does not say): only those walk shapes are compiled for it.
+template <typename Kernel>
+constexpr bool kernel_may_need_uv() {
+  if constexpr (requires { Kernel::may_need_uv; }) return Kernel::may_need_uv;
+  else return true;
+}
+template <typename Kernel>
+constexpr bool kernel_may_need_projectors() {
+  if constexpr (requires { Kernel::may_need_projectors; }) return Kernel::may_need_projectors;
+  else return true;
+}
+
 // Kernel interface: needs(), object(const ObjectData&), pixel(index, values).
 template <typename F, typename Kernel>
 inline void draw_pass(const PreparedScene& scene, const PassView& view, const Precision& precision, Kernel& kernel) {
@@ -109,12 +122,13 @@ inline void draw_pass(const PreparedScene& scene, const PassView& view, const Pr
         }
         for (int j = needs.projector_begin; j < needs.projector_end; ++j) normalise_projector<P>(ordered, j, attrs);
 
-        rasterize_rows(setup, view.width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
-          const std::int32_t row_start = row * view.width;
-          walk_span<P, R>(setup, attrs, needs, control, c0, c1,
-                          [&](std::int32_t column, const PointValues<P>& values) {
-                            kernel.pixel(row_start + column, values);
-                          });
+        with_walk_shape<kernel_may_need_uv<Kernel>(), (kernel_may_need_projectors<Kernel>() && P > 0)>(needs, [&](auto uv, auto projectors) {
+          rasterize_rows(setup, view.width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
+            const std::int32_t row_start = row * view.width;
+            walk_span<P, R, decltype(uv)::value, decltype(projectors)::value>(
+                setup, attrs, needs, control, c0, c1,
+                [&](std::int32_t column, const PointValues<P>& values) { kernel.pixel(row_start + column, values); });
+          });
         });
       }
     }

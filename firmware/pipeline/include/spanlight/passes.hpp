@@ -19,6 +19,7 @@ enum PassId : int { pass_shadow = 0, pass_depth_ambient = 1, pass_light = 2, pas
 
 template <typename DepthT>
 struct ShadowDepthKernel {
+  static constexpr bool may_need_uv = false, may_need_projectors = false;
   DepthT* map;
   int depth_bits;
   SpanNeeds needs() const { return {false, 0, 0}; }
@@ -33,17 +34,19 @@ struct ShadowDepthKernel {
 template <typename F, typename DepthT, typename Observer>
 struct DepthAmbientKernel {
   using Color = ColorTraits<F::format>;
+  static constexpr bool may_need_uv = false, may_need_projectors = false;
   FrameTarget<F::format, DepthT> target;
   Rgb8 ambient;
   int depth_bits;
+  typename Color::Storage stored_ambient[Color::per_pixel] = {};  // packed once, copied per pixel
   SpanNeeds needs() const { return {false, 0, 0}; }
-  void object(const ObjectData&) {}
+  void object(const ObjectData&) { Color::store(stored_ambient, ambient); }
   template <typename V>
   void pixel(std::int32_t i, const V& v) {
     const std::uint32_t d = depth_store(v.z, depth_bits);
     if (d < target.depth[i]) {
       target.depth[i] = static_cast<DepthT>(d);
-      Color::store(target.color + i * Color::per_pixel, ambient);
+      for (int k = 0; k < Color::per_pixel; ++k) target.color[i * Color::per_pixel + k] = stored_ambient[k];
       Observer::touched(pass_depth_ambient, i);
     }
   }
@@ -52,6 +55,7 @@ struct DepthAmbientKernel {
 template <typename F, typename DepthT, typename Observer>
 struct LightKernel {
   using Color = ColorTraits<F::format>;
+  static constexpr bool may_need_uv = false, may_need_projectors = true;
   FrameTarget<F::format, DepthT> target;
   LightContext light;
   int projector;
@@ -73,6 +77,7 @@ struct LightKernel {
 template <typename F, typename DepthT, typename Observer>
 struct ModulateKernel {
   using Color = ColorTraits<F::format>;
+  static constexpr bool may_need_uv = true, may_need_projectors = false;
   FrameTarget<F::format, DepthT> target;
   const TextureData* textures;
   const ObjectData* current = nullptr;
@@ -97,6 +102,7 @@ struct ModulateKernel {
 template <typename F, typename DepthT, typename Observer>
 struct FusedKernel {
   using Color = ColorTraits<F::format>;
+  static constexpr bool may_need_uv = true, may_need_projectors = true;
   FrameTarget<F::format, DepthT> target;
   const PreparedScene* scene;
   const LightContext* lights;  // one per projector

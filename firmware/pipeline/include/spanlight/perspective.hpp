@@ -38,10 +38,8 @@ constexpr std::int32_t saturate_proj(std::int64_t x) {
   return x > proj_limit ? proj_limit : (x < -proj_limit ? -proj_limit : static_cast<std::int32_t>(x));
 }
 
-// n / d in Q3.28 for d > 0, |n| < 2^31: n * mantissa < 2^62.
-template <typename R>
-constexpr std::int32_t divide_q28(std::int32_t n, std::uint32_t d) {
-  const fixedpoint::Reciprocal rcp = R::of(d);
+// n / d in Q3.28 given rcp = R::of(d), d > 0, |n| < 2^31: n * mantissa < 2^62.
+constexpr std::int32_t divide_q28(std::int32_t n, const fixedpoint::Reciprocal& rcp) {
   return saturate_proj((std::int64_t{n} * rcp.mantissa) >> (rcp.shift - proj_frac_bits));
 }
 
@@ -85,10 +83,11 @@ template <int P, typename R>
 constexpr GroupPoint evaluate_group(const TriangleSetup& t, const TriangleAttributes<P>& a, int group,
                                     std::int64_t e1, std::int64_t e2) {
   const Weights w = perspective_weights<R>(t, e1, e2);
-  GroupPoint out{};
+  GroupPoint out;  // every field set below: no zeroing (it was a memset per point)
   if (group == uv_group) {
     out.value[0] = mix3(a.u0, a.du1, a.du2, w.b1, w.b2);
     out.value[1] = mix3(a.v0, a.dv1, a.dv2, w.b1, w.b2);
+    out.value[2] = 0;
     out.denominator = w.rho;
     out.front = true;
     return out;
@@ -101,8 +100,8 @@ constexpr GroupPoint evaluate_group(const TriangleSetup& t, const TriangleAttrib
     out.value[0] = out.value[1] = out.value[2] = -proj_limit;  // never inside [0, 1]
     return out;
   }
-  const auto d = static_cast<std::uint32_t>(q);
-  for (int c = 0; c < 3; ++c) out.value[c] = divide_q28<R>(mix3(a.proj0[j][c], a.proj_d1[j][c], a.proj_d2[j][c], w.b1, w.b2), d);
+  const fixedpoint::Reciprocal rcp = R::of(static_cast<std::uint32_t>(q));  // one reciprocal, three products
+  for (int c = 0; c < 3; ++c) out.value[c] = divide_q28(mix3(a.proj0[j][c], a.proj_d1[j][c], a.proj_d2[j][c], w.b1, w.b2), rcp);
   return out;
 }
 

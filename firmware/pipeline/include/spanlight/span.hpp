@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "spanlight/perspective.hpp"
 
@@ -94,30 +95,41 @@ struct GroupStepper {
   std::int32_t column;       // where `value` is
   std::int32_t segment_end;  // column of `end`
   bool per_pixel;            // q changes sign inside this segment
+  std::int32_t trial_length; // first length tried for the next segment
   GroupPoint end;
 
   constexpr void start(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c, int g,
                        std::int32_t c0, std::int32_t c1) {
     group = g;
+    trial_length = 1 << c.span_log2;
     const GroupPoint first = evaluate_group<P, R>(t, a, group, t.edge[1].value_at(c0), t.edge[2].value_at(c0));
     take(first, c0);
     if (c0 < c1) plan_segment(t, a, c, first, c1);  // as advance(): no segment past c1
   }
 
-  // Move from `column` to `column + 1` (never past c1).
-  constexpr void advance(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c, std::int32_t c1) {
+  // Move from `column` to `column + 1` (never past c1). Inlined into the
+  // pixel loop: three adds; segment ends and per-pixel stretches go out of line.
+  [[gnu::always_inline]] constexpr void advance(const TriangleSetup& t, const TriangleAttributes<P>& a,
+                                                const SpanControl& c, std::int32_t c1) {
     ++column;
-    if (column == segment_end) {
-      take(end, column);
-      if (column < c1) plan_segment(t, a, c, end, c1);
-    } else if (per_pixel) {
-      take(evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column), t.edge[2].value_at(column)), column);
+    if (column == segment_end || per_pixel) {
+      next_point(t, a, c, c1);
     } else {
       for (int k = 0; k < 3; ++k) value[k] += step[k];
     }
   }
 
  private:
+  [[gnu::noinline]] constexpr void next_point(const TriangleSetup& t, const TriangleAttributes<P>& a,
+                                              const SpanControl& c, std::int32_t c1) {
+    if (column == segment_end) {
+      take(end, column);
+      if (column < c1) plan_segment(t, a, c, end, c1);
+    } else {  // per_pixel
+      take(evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column), t.edge[2].value_at(column)), column);
+    }
+  }
+
   constexpr void take(const GroupPoint& p, std::int32_t at) {
     for (int k = 0; k < 3; ++k) value[k] = p.value[k];
     front = p.front;
@@ -126,14 +138,18 @@ struct GroupStepper {
 
   constexpr void plan_segment(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c,
                               const GroupPoint from, std::int32_t c1) {  // a copy: `end` is rewritten below
+    // Start from twice the last segment's length (the curvature that shortened
+    // it changes slowly along a row), so a row pays about one exact point per
+    // segment rather than one per halving.
     const std::int32_t span_len = 1 << c.span_log2;
-    std::int32_t len = c1 - column < span_len ? c1 - column : span_len;
+    std::int32_t len = c1 - column < trial_length ? c1 - column : trial_length;
     for (;;) {  // halve until linear stepping is close enough
       end = evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column + len), t.edge[2].value_at(column + len));
       if (len == 1 || (!saturation_breaks_linearity(from, end) && linear_enough(texel_delta8(from, end, group, c), from.denominator, end.denominator, c.tolerance_log2)))
         break;
       len = (len + 1) >> 1;
     }
+    trial_length = 2 * len < span_len ? 2 * len : span_len;
     segment_end = column + len;
     per_pixel = from.front != end.front;
     for (int k = 0; k < 3; ++k) step[k] = per_pixel ? 0 : step_of(from.value[k], end.value[k], len);
@@ -148,14 +164,15 @@ struct DepthStepper {
 
   constexpr void start(const TriangleSetup& t, std::int32_t c0) {
     column = c0;
-    const std::int32_t z = exact(t);
+    const std::int32_t z = exact(t, column);
     acc = static_cast<std::int64_t>(static_cast<std::uint64_t>(std::int64_t{z}) << 32) + (std::int64_t{1} << 31);
   }
-  constexpr std::int32_t exact(const TriangleSetup& t) const {
+  // Out of line and cold: the per-pixel loop keeps no edge values alive for it.
+  [[gnu::noinline, gnu::cold]] static constexpr std::int32_t exact(const TriangleSetup& t, std::int32_t column) {
     return mix3(t.z0, t.dz1, t.dz2, barycentric(t, t.edge[1].value_at(column)), barycentric(t, t.edge[2].value_at(column)));
   }
   constexpr std::int32_t value(const TriangleSetup& t) const {
-    return t.depth_per_pixel ? exact(t) : static_cast<std::int32_t>(acc >> 32);
+    return t.depth_per_pixel ? exact(t, column) : static_cast<std::int32_t>(acc >> 32);
   }
   constexpr void advance(const TriangleSetup& t) {
     ++column;
@@ -163,36 +180,69 @@ struct DepthStepper {
   }
 };
 
-// Walks columns [c0, c1] of one row. `pixel(column, values)` is the pass's kernel.
-template <int P, typename R, typename PixelFn>
+// Walks columns [c0, c1] of one row. `pixel(column, values)` is the pass's
+// kernel. UV and Projectors are fixed at compile time so that each pass gets a
+// loop holding only what it steps: a depth pass steps depth alone.
+template <int P, typename R, bool UV, bool Projectors, typename PixelFn>
 inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
                       const SpanControl& control, std::int32_t c0, std::int32_t c1, PixelFn&& pixel) {
   DepthStepper depth{};
   depth.start(t, c0);
-  GroupStepper<P, R> uv{};
-  if (needs.uv) uv.start(t, a, control, uv_group, c0, c1);
-  GroupStepper<P, R> projector[P > 0 ? P : 1]{};
-  for (int j = needs.projector_begin; j < needs.projector_end; ++j) projector[j].start(t, a, control, j, c0, c1);
+  GroupStepper<P, R> uv;  // start() sets everything advance() reads
+  if constexpr (UV) uv.start(t, a, control, uv_group, c0, c1);
+  GroupStepper<P, R> projector[P > 0 && Projectors ? P : 1];
+  if constexpr (Projectors)
+    for (int j = needs.projector_begin; j < needs.projector_end; ++j) projector[j].start(t, a, control, j, c0, c1);
 
   PointValues<P> values{};
   for (std::int32_t column = c0;; ++column) {
     values.z = depth.value(t);
-    if (needs.uv) {
+    if constexpr (UV) {
       values.u = uv.value[0];
       values.v = uv.value[1];
     }
-    for (int j = needs.projector_begin; j < needs.projector_end; ++j) {
-      values.s[j] = projector[j].value[0];
-      values.t[j] = projector[j].value[1];
-      values.r[j] = projector[j].value[2];
-      values.front[j] = projector[j].front;
+    if constexpr (Projectors) {
+      for (int j = needs.projector_begin; j < needs.projector_end; ++j) {
+        values.s[j] = projector[j].value[0];
+        values.t[j] = projector[j].value[1];
+        values.r[j] = projector[j].value[2];
+        values.front[j] = projector[j].front;
+      }
     }
     pixel(column, values);
     if (column == c1) break;
     depth.advance(t);
-    if (needs.uv) uv.advance(t, a, control, c1);
-    for (int j = needs.projector_begin; j < needs.projector_end; ++j) projector[j].advance(t, a, control, c1);
+    if constexpr (UV) uv.advance(t, a, control, c1);
+    if constexpr (Projectors)
+      for (int j = needs.projector_begin; j < needs.projector_end; ++j) projector[j].advance(t, a, control, c1);
   }
+}
+
+// Calls fn(bool_constant<UV>, bool_constant<Projectors>) with the walk shape
+// `needs` asks for, instantiating only the shapes the caller allows.
+template <bool AllowUV, bool AllowProjectors, typename Fn>
+inline void with_walk_shape(const SpanNeeds& needs, Fn&& fn) {
+  const bool uv = AllowUV && needs.uv;
+  const bool projectors = AllowProjectors && needs.projector_begin < needs.projector_end;
+  if constexpr (AllowUV && AllowProjectors) {
+    if (uv && projectors) return fn(std::true_type{}, std::true_type{});
+  }
+  if constexpr (AllowUV) {
+    if (uv) return fn(std::true_type{}, std::false_type{});
+  }
+  if constexpr (AllowProjectors) {
+    if (projectors) return fn(std::false_type{}, std::true_type{});
+  }
+  fn(std::false_type{}, std::false_type{});
+}
+
+// The same walk with its shape chosen at run time from `needs` (tests, tools).
+template <int P, typename R, typename PixelFn>
+inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
+                      const SpanControl& control, std::int32_t c0, std::int32_t c1, PixelFn&& pixel) {
+  with_walk_shape<true, (P > 0)>(needs, [&](auto uv, auto projectors) {
+    walk_span<P, R, decltype(uv)::value, decltype(projectors)::value>(t, a, needs, control, c0, c1, pixel);
+  });
 }
 
 // The row loop: each row's covered columns from the three edges' half-planes.

@@ -66,3 +66,27 @@ TEST_CASE("bit helpers", "[bits]") {
   static_assert(fixedpoint::saturate32(std::int64_t{1} << 40) == INT32_MAX && fixedpoint::saturate32(INT64_MIN) == INT32_MIN);
   SUCCEED();
 }
+
+// The ARMv6-M products (four 16x16 multiplies) against the host's native 64-bit product:
+// the corners of every sign and magnitude, then 2^20 seeded random pairs per kind.
+TEST_CASE("32x32 -> 64 products from 16-bit halves equal the native product", "[bits][multiply]") {
+  const std::uint32_t corners[] = {0u, 1u, 2u, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u, 0x80000001u, 0xFFFFFFFEu, 0xFFFFFFFFu};
+  for (const std::uint32_t a : corners) {
+    for (const std::uint32_t b : corners) {
+      REQUIRE(fixedpoint::mul_u32_halves(a, b) == std::uint64_t{a} * b);
+      const auto sa = static_cast<std::int32_t>(a), sb = static_cast<std::int32_t>(b);
+      REQUIRE(fixedpoint::mul_s32_halves(sa, sb) == std::int64_t{sa} * sb);
+      REQUIRE(fixedpoint::mul_s32_u32_halves(sa, b) == std::int64_t{sa} * b);
+    }
+  }
+  std::mt19937_64 random(20261122);
+  for (int i = 0; i < (1 << 20); ++i) {
+    const auto a = static_cast<std::uint32_t>(random()), b = static_cast<std::uint32_t>(random());
+    const auto sa = static_cast<std::int32_t>(a), sb = static_cast<std::int32_t>(b);
+    if (fixedpoint::mul_u32_halves(a, b) != std::uint64_t{a} * b || fixedpoint::mul_s32_halves(sa, sb) != std::int64_t{sa} * sb ||
+        fixedpoint::mul_s32_u32_halves(sa, b) != std::int64_t{sa} * b) {
+      FAIL("mismatch at a = " << a << ", b = " << b);
+    }
+  }
+  STATIC_REQUIRE(fixedpoint::mul_s32_halves(-65536, 65537) == -65536LL * 65537);  // constexpr too
+}

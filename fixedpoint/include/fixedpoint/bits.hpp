@@ -18,6 +18,52 @@ constexpr int bit_length(std::uint64_t x) { return x == 0 ? 0 : 64 - clz64(x); }
 // terms (C++20 makes >> on negatives arithmetic; this states the intent).
 constexpr std::int64_t asr64(std::int64_t x, int s) { return x >> s; }
 
+// 32x32 -> 64-bit products. ARMv6-M (Cortex-M0/M0+) multiplies 32x32 -> 32
+// only, so for `int64 * int64` the compiler calls libgcc's __muldi3 (a full
+// 64x64 product: about 40 instructions and a call) even when both factors are
+// 32-bit. Four 16x16 products inline are about half that. Cores with UMULL /
+// SMULL (M3, M4, M7, the host) use the plain product: one instruction.
+[[gnu::always_inline]] constexpr std::uint64_t mul_u32_halves(std::uint32_t a, std::uint32_t b) {
+  const std::uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+  const std::uint32_t ll = al * bl, lh = al * bh, hl = ah * bl, hh = ah * bh;  // each < 2^32
+  const std::uint32_t mid = (ll >> 16) + (lh & 0xFFFFu) + (hl & 0xFFFFu);      // < 3 * 2^16
+  const std::uint32_t lo = (mid << 16) | (ll & 0xFFFFu);
+  const std::uint32_t hi = hh + (lh >> 16) + (hl >> 16) + (mid >> 16);         // the exact top word
+  return (std::uint64_t{hi} << 32) | lo;
+}
+
+// Two's complement: a = ua - 2^32 [a < 0], so a * b = ua * ub - 2^32 (ub [a < 0] + ua [b < 0])
+// modulo 2^64, and the true product fits int64.
+[[gnu::always_inline]] constexpr std::int64_t mul_s32_halves(std::int32_t a, std::int32_t b) {
+  const auto ua = static_cast<std::uint32_t>(a), ub = static_cast<std::uint32_t>(b);
+  const std::uint32_t correction = (a < 0 ? ub : 0u) + (b < 0 ? ua : 0u);  // only its value mod 2^32 matters
+  return static_cast<std::int64_t>(mul_u32_halves(ua, ub) - (std::uint64_t{correction} << 32));
+}
+
+[[gnu::always_inline]] constexpr std::int64_t mul_s32_u32_halves(std::int32_t a, std::uint32_t b) {
+  const auto ua = static_cast<std::uint32_t>(a);
+  return static_cast<std::int64_t>(mul_u32_halves(ua, b) - (std::uint64_t{a < 0 ? b : 0u} << 32));
+}
+
+#if defined(__ARM_ARCH_6M__)
+inline constexpr bool has_long_multiply = false;  // no UMULL/SMULL
+#else
+inline constexpr bool has_long_multiply = true;
+#endif
+
+[[gnu::always_inline]] constexpr std::uint64_t mul_u32(std::uint32_t a, std::uint32_t b) {
+  if constexpr (has_long_multiply) return std::uint64_t{a} * b;
+  else return mul_u32_halves(a, b);
+}
+[[gnu::always_inline]] constexpr std::int64_t mul_s32(std::int32_t a, std::int32_t b) {
+  if constexpr (has_long_multiply) return std::int64_t{a} * b;
+  else return mul_s32_halves(a, b);
+}
+[[gnu::always_inline]] constexpr std::int64_t mul_s32_u32(std::int32_t a, std::uint32_t b) {
+  if constexpr (has_long_multiply) return std::int64_t{a} * b;
+  else return mul_s32_u32_halves(a, b);
+}
+
 // floor(a * b / 2^s) for any int64 a, |b| < 2^31 and 0 <= s <= 32, without
 // the 96-bit product overflowing: split a into hi*2^32 + lo (lo unsigned).
 // floor((H*2^32 + L) / 2^s) = H*2^(32-s) + floor(L / 2^s) exactly, because

@@ -60,9 +60,9 @@ constexpr std::uint32_t reciprocal_normalised(std::uint32_t m) {
   std::uint32_t y = static_cast<std::uint32_t>(reciprocal_table<TableBits>.entry[index]) << 15;  // Q1.31
   for (int step = 0; step < NewtonSteps; ++step) {
     // m*y is Q2.62 and close to 2^62; 2 - m*y is then close to 1 (Q2.62: 2^63 - m*y).
-    const std::uint64_t my = static_cast<std::uint64_t>(m) * y;
+    const std::uint64_t my = mul_u32(m, y);
     const std::uint32_t two_minus = static_cast<std::uint32_t>(((std::uint64_t{1} << 63) - my) >> 31);  // Q1.31
-    y = static_cast<std::uint32_t>((static_cast<std::uint64_t>(y) * two_minus) >> 31);
+    y = static_cast<std::uint32_t>(mul_u32(y, two_minus) >> 31);
   }
   return y;
 }

@@ -31,7 +31,7 @@ struct TriangleAttributes {
 
 constexpr std::int32_t mix3(std::int32_t base, std::int32_t d1, std::int32_t d2, std::int32_t b1, std::int32_t b2) {
   // |d| < 2^31, b <= 2^30: each product < 2^61, the sum < 2^62.
-  return static_cast<std::int32_t>(base + ((std::int64_t{d1} * b1 + std::int64_t{d2} * b2) >> 30));
+  return static_cast<std::int32_t>(base + ((fixedpoint::mul_s32(d1, b1) + fixedpoint::mul_s32(d2, b2)) >> 30));
 }
 
 constexpr std::int32_t saturate_proj(std::int64_t x) {
@@ -40,7 +40,7 @@ constexpr std::int32_t saturate_proj(std::int64_t x) {
 
 // n / d in Q3.28 given rcp = R::of(d), d > 0, |n| < 2^31: n * mantissa < 2^62.
 constexpr std::int32_t divide_q28(std::int32_t n, const fixedpoint::Reciprocal& rcp) {
-  return saturate_proj((std::int64_t{n} * rcp.mantissa) >> (rcp.shift - proj_frac_bits));
+  return saturate_proj(fixedpoint::mul_s32_u32(n, rcp.mantissa) >> (rcp.shift - proj_frac_bits));
 }
 
 // Perspective-correct barycentrics beta_1, beta_2 (Q0.30) and the
@@ -57,15 +57,15 @@ constexpr Weights perspective_weights(const TriangleSetup& t, std::int64_t e1, s
   std::int32_t l0 = one_q30 - l1 - l2;
   if (l0 < 0) l0 = 0;
   // rho_i = lambda_i * w_i^-1, each < 2^30.
-  const std::uint32_t rho0 = static_cast<std::uint32_t>((std::uint64_t(std::uint32_t(l0)) * t.omega[0]) >> 31);
-  const std::uint32_t rho1 = static_cast<std::uint32_t>((std::uint64_t(std::uint32_t(l1)) * t.omega[1]) >> 31);
-  const std::uint32_t rho2 = static_cast<std::uint32_t>((std::uint64_t(std::uint32_t(l2)) * t.omega[2]) >> 31);
+  const std::uint32_t rho0 = static_cast<std::uint32_t>(fixedpoint::mul_u32(std::uint32_t(l0), t.omega[0]) >> 31);
+  const std::uint32_t rho1 = static_cast<std::uint32_t>(fixedpoint::mul_u32(std::uint32_t(l1), t.omega[1]) >> 31);
+  const std::uint32_t rho2 = static_cast<std::uint32_t>(fixedpoint::mul_u32(std::uint32_t(l2), t.omega[2]) >> 31);
   const std::uint32_t sum = rho0 + rho1 + rho2;  // < 3 * 2^30
   if (sum == 0) return {l1, l2, 0};
   const fixedpoint::Reciprocal rcp = R::of(sum);
   const int shift = rcp.shift - 30;  // >= 32 because sum < 2^32
-  return {static_cast<std::int32_t>((std::uint64_t{rho1} * rcp.mantissa) >> shift),
-          static_cast<std::int32_t>((std::uint64_t{rho2} * rcp.mantissa) >> shift), sum};
+  return {static_cast<std::int32_t>(fixedpoint::mul_u32(rho1, rcp.mantissa) >> shift),
+          static_cast<std::int32_t>(fixedpoint::mul_u32(rho2, rcp.mantissa) >> shift), sum};
 }
 
 // One group's values at a point: the surface's (u, v) or a projector's
@@ -94,7 +94,7 @@ constexpr GroupPoint evaluate_group(const TriangleSetup& t, const TriangleAttrib
   }
   const int j = group;
   const std::int32_t q = mix3(a.proj0[j][3], a.proj_d1[j][3], a.proj_d2[j][3], w.b1, w.b2);
-  out.denominator = std::int64_t{q} * w.rho;  // q/w up to the triangle's constant scale
+  out.denominator = fixedpoint::mul_s32_u32(q, w.rho);  // q/w up to the triangle's constant scale
   out.front = q > 0;
   if (q <= 0) {
     out.value[0] = out.value[1] = out.value[2] = -proj_limit;  // never inside [0, 1]

@@ -67,7 +67,10 @@ struct Edge {
     }
   }
 
-  constexpr std::int64_t value_at(std::int32_t column) const { return slope * column + row_value; }
+  // |slope| = 256 |dy| < 2^30 (deltas < 2^22, see the top): a 32x32 product.
+  constexpr std::int64_t value_at(std::int32_t column) const {
+    return fixedpoint::mul_s32(static_cast<std::int32_t>(slope), column) + row_value;
+  }
 };
 
 struct TriangleSetup {
@@ -167,7 +170,10 @@ constexpr std::int32_t barycentric(const TriangleSetup& t, std::int64_t e) {
   if (e <= 0) return 0;
   const std::uint64_t e_norm = t.area_shift >= 0 ? static_cast<std::uint64_t>(e) >> t.area_shift
                                                  : static_cast<std::uint64_t>(e) << -t.area_shift;
-  const std::uint64_t lambda = (e_norm * t.area_rcp) >> 32;  // e_norm <= 2^31, rcp <= 2^32
+  // e_norm <= 2^31 and rcp in (2^31, 2^32]: a 32x32 product, except rcp = 2^32 (D = 2^30), where lambda = e_norm.
+  const std::uint64_t lambda = t.area_rcp >> 32 ? e_norm
+                                                : fixedpoint::mul_u32(static_cast<std::uint32_t>(e_norm),
+                                                                      static_cast<std::uint32_t>(t.area_rcp)) >> 32;
   return lambda > (1u << 30) ? (1 << 30) : static_cast<std::int32_t>(lambda);
 }
 

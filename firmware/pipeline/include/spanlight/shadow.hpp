@@ -31,8 +31,8 @@ inline std::uint32_t shadow_factor(const ProjectorData& p, const DepthT* map, st
   if constexpr (Pcf) {
     if (p.filter == ShadowFilter::pcf2x2) {
       // Map coordinates with 8 fraction bits, shifted to texel centres.
-      const std::int32_t xs = static_cast<std::int32_t>((std::int64_t{s} * size) >> (shadow_proj_frac_bits - 8)) - 128;
-      const std::int32_t ys = static_cast<std::int32_t>((std::int64_t{t} * size) >> (shadow_proj_frac_bits - 8)) - 128;
+      const std::int32_t xs = static_cast<std::int32_t>(fixedpoint::mul_s32(s, size) >> (shadow_proj_frac_bits - 8)) - 128;
+      const std::int32_t ys = static_cast<std::int32_t>(fixedpoint::mul_s32(t, size) >> (shadow_proj_frac_bits - 8)) - 128;
       const std::int32_t x0 = xs >> 8, y0 = ys >> 8;
       const std::uint32_t fx = static_cast<std::uint32_t>(xs) & 255u, fy = static_cast<std::uint32_t>(ys) & 255u;
       const std::uint32_t lit = (256 - fx) * (256 - fy) * shadow_lit_at(map, size, x0, y0, r_biased, depth_bits) +
@@ -42,8 +42,8 @@ inline std::uint32_t shadow_factor(const ProjectorData& p, const DepthT* map, st
       return (lit + 128u) >> 8;
     }
   }
-  const std::int32_t x = static_cast<std::int32_t>((std::int64_t{s} * size) >> shadow_proj_frac_bits);
-  const std::int32_t y = static_cast<std::int32_t>((std::int64_t{t} * size) >> shadow_proj_frac_bits);
+  const std::int32_t x = static_cast<std::int32_t>(fixedpoint::mul_s32(s, size) >> shadow_proj_frac_bits);
+  const std::int32_t y = static_cast<std::int32_t>(fixedpoint::mul_s32(t, size) >> shadow_proj_frac_bits);
   return shadow_lit_at(map, size, x, y, r_biased, depth_bits) ? 256u : 0u;
 }
 

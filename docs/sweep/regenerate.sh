@@ -3,7 +3,7 @@
 # two anchor scenes, with the default grid, counted on Cortex-M7 and Cortex-M0+ in QEMU.
 #   docs/sweep/regenerate.sh [BUILD_DIR]      (default: build; needs bin/spanlight, the
 #                                              firmware trees and the QEMU plugin built)
-# Takes about 15 minutes in all. Run from anywhere; scene paths in the output are relative
+# Takes about 8 minutes in all on an idle 2-core machine. Run from anywhere; scene paths in the output are relative
 # to the source tree.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)

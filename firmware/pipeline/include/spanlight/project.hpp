@@ -42,9 +42,7 @@ struct VertexDivider {
   }
 };
 
-constexpr std::int32_t round_q32_to_int(std::int64_t value_q32) {
-  return static_cast<std::int32_t>((value_q32 + (std::int64_t{1} << 31)) >> 32);
-}
+constexpr std::int64_t round_q32_to_int64(std::int64_t value_q32) { return (value_q32 + (std::int64_t{1} << 31)) >> 32; }
 
 constexpr ScreenVertex project(const Vec4Wide& c, int width, int height) {
   const VertexDivider div(c.w);
@@ -54,8 +52,13 @@ constexpr ScreenVertex project(const Vec4Wide& c, int width, int height) {
   const std::int64_t y_ratio = div.ratio_q32(w - c.y);  // row 0 at the top: flip y
   const std::int64_t z_ratio = div.ratio_q32(c.z + w);  // in [0, 2] after clipping
   ScreenVertex v{};
-  v.x = round_q32_to_int(x_ratio * (std::int64_t{width} << (subpixel_bits - 1)));
-  v.y = round_q32_to_int(y_ratio * (std::int64_t{height} << (subpixel_bits - 1)));
+  // The guard band keeps |x| <= G w, so |x_win| < 2^21 subpixels (setup's bound), except
+  // for a cut vertex within lerp's rounding of the eye (w of a few raw units), where that
+  // rounding is a sizeable part of w. Clamping restores the bound and changes nothing else.
+  constexpr std::int64_t limit = (std::int64_t{1} << 21) - 1;
+  auto clamp_to_limit = [](std::int64_t value) { return value > limit ? limit : (value < -limit ? -limit : value); };
+  v.x = static_cast<std::int32_t>(clamp_to_limit(round_q32_to_int64(x_ratio * (std::int64_t{width} << (subpixel_bits - 1)))));
+  v.y = static_cast<std::int32_t>(clamp_to_limit(round_q32_to_int64(y_ratio * (std::int64_t{height} << (subpixel_bits - 1)))));
   const std::int64_t z = (z_ratio + (std::int64_t{1} << 2)) >> 3;  // /2, Q.32 -> Q.30
   v.z = static_cast<std::int32_t>(z < 0 ? 0 : (z > (1 << depth_frac_bits) ? (1 << depth_frac_bits) : z));
   v.inv_w_mantissa = div.rcp.mantissa;

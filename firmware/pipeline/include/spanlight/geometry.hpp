@@ -65,6 +65,21 @@ constexpr bool kernel_may_need_projectors() {
   else return true;
 }
 
+// A kernel whose pixel() is const keeps no state of its own per pixel, so the
+// walk may use a copy that lives in registers: a store through the colour
+// buffer's uint8_t* may alias any object in memory, and every member of the
+// kernel itself would be reloaded after each pixel. Other kernels (tests'
+// recorders) are called in place.
+template <int P, typename Kernel, typename Fn>
+inline void with_pixel_kernel(Kernel& kernel, Fn&& fn) {
+  if constexpr (requires(const Kernel& k, const PointValues<P>& v) { k.pixel(std::int32_t{0}, v); }) {
+    const Kernel local = kernel;
+    fn(local);
+  } else {
+    fn(kernel);
+  }
+}
+
 // Kernel interface: needs(), object(const ObjectData&), pixel(index, values).
 template <typename F, typename Kernel>
 inline void draw_pass(const PreparedScene& scene, const PassView& view, const Precision& precision, Kernel& kernel) {
@@ -122,12 +137,14 @@ inline void draw_pass(const PreparedScene& scene, const PassView& view, const Pr
         }
         for (int j = needs.projector_begin; j < needs.projector_end; ++j) normalise_projector<P>(ordered, j, attrs);
 
-        with_walk_shape<kernel_may_need_uv<Kernel>(), (kernel_may_need_projectors<Kernel>() && P > 0)>(needs, [&](auto uv, auto projectors) {
-          rasterize_rows(setup, view.width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
-            const std::int32_t row_start = row * view.width;
-            walk_span<P, R, decltype(uv)::value, decltype(projectors)::value>(
-                setup, attrs, needs, control, c0, c1,
-                [&](std::int32_t column, const PointValues<P>& values) { kernel.pixel(row_start + column, values); });
+        with_pixel_kernel<P>(kernel, [&](auto& pixel_kernel) {
+          with_walk_shape<kernel_may_need_uv<Kernel>(), (kernel_may_need_projectors<Kernel>() && P > 0)>(needs, [&](auto uv, auto projectors) {
+            rasterize_rows(setup, view.width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
+              const std::int32_t row_start = row * view.width;
+              walk_span<P, R, decltype(uv)::value, decltype(projectors)::value>(
+                  setup, attrs, needs, control, c0, c1,
+                  [&](std::int32_t column, const PointValues<P>& values) { pixel_kernel.pixel(row_start + column, values); });
+            });
           });
         });
       }

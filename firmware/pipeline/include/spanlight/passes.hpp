@@ -25,7 +25,7 @@ struct ShadowDepthKernel {
   SpanNeeds needs() const { return {false, 0, 0}; }
   void object(const ObjectData&) {}
   template <typename V>
-  void pixel(std::int32_t i, const V& v) {
+  void pixel(std::int32_t i, const V& v) const {
     const std::uint32_t d = depth_store(v.z, depth_bits);
     if (d < map[i]) map[i] = static_cast<DepthT>(d);
   }
@@ -42,7 +42,7 @@ struct DepthAmbientKernel {
   SpanNeeds needs() const { return {false, 0, 0}; }
   void object(const ObjectData&) { Color::store(stored_ambient, ambient); }
   template <typename V>
-  void pixel(std::int32_t i, const V& v) {
+  void pixel(std::int32_t i, const V& v) const {
     const std::uint32_t d = depth_store(v.z, depth_bits);
     if (d < target.depth[i]) {
       target.depth[i] = static_cast<DepthT>(d);
@@ -63,7 +63,7 @@ struct LightKernel {
   SpanNeeds needs() const { return {false, projector, projector + 1}; }
   void object(const ObjectData&) {}
   template <typename V>
-  void pixel(std::int32_t i, const V& v) {
+  void pixel(std::int32_t i, const V& v) const {
     const std::uint32_t d = depth_store(v.z, depth_bits);
     if (d == depth_clear(depth_bits) || d != target.depth[i] || !claim_pixel(target.tie_mask, i)) return;
     Observer::touched(pass_light, i);
@@ -89,7 +89,7 @@ struct ModulateKernel {
     texture = o.texture >= 0 ? &textures[o.texture] : nullptr;
   }
   template <typename V>
-  void pixel(std::int32_t i, const V& v) {
+  void pixel(std::int32_t i, const V& v) const {
     const std::uint32_t d = depth_store(v.z, depth_bits);
     if (d == depth_clear(depth_bits) || d != target.depth[i] || !claim_pixel(target.tie_mask, i)) return;
     Observer::touched(pass_modulate, i);
@@ -116,7 +116,7 @@ struct FusedKernel {
     texture = o.texture >= 0 ? &scene->textures[o.texture] : nullptr;
   }
   template <typename V>
-  void pixel(std::int32_t i, const V& v) {
+  void pixel(std::int32_t i, const V& v) const {
     const std::uint32_t d = depth_store(v.z, depth_bits);
     if (d >= target.depth[i]) return;
     target.depth[i] = static_cast<DepthT>(d);

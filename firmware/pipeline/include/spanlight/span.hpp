@@ -85,14 +85,16 @@ constexpr std::int32_t step_of(std::int32_t from, std::int32_t to, std::int32_t 
                                       : delta / length;
 }
 
-// One group's walk along a span, one column at a time.
+// One group's schedule along a span: the exact point it started from, the
+// step to the next one, and the planning done there. The walk copies value
+// and step into locals for the pixels between events (stores to the colour
+// buffer may alias anything in memory; locals stay in registers).
 template <int P, typename R>
 struct GroupStepper {
   int group;
   std::int32_t value[3];
   bool front;
   std::int32_t step[3];
-  std::int32_t column;       // where `value` is
   std::int32_t segment_end;  // column of `end`
   bool per_pixel;            // q changes sign inside this segment
   std::int32_t trial_length; // first length tried for the next segment
@@ -103,41 +105,43 @@ struct GroupStepper {
     group = g;
     trial_length = 1 << c.span_log2;
     const GroupPoint first = evaluate_group<P, R>(t, a, group, t.edge[1].value_at(c0), t.edge[2].value_at(c0));
-    take(first, c0);
-    if (c0 < c1) plan_segment(t, a, c, first, c1);  // as advance(): no segment past c1
+    take(first);
+    plan_or_finish(t, a, c, first, c0, c1);
   }
 
-  // Move from `column` to `column + 1` (never past c1). Inlined into the
-  // pixel loop: three adds; segment ends and per-pixel stretches go out of line.
-  [[gnu::always_inline]] constexpr void advance(const TriangleSetup& t, const TriangleAttributes<P>& a,
-                                                const SpanControl& c, std::int32_t c1) {
-    ++column;
-    if (column == segment_end || per_pixel) {
-      next_point(t, a, c, c1);
+  // The next column at which this group needs out-of-line work, seen from `column`.
+  constexpr std::int32_t next_event(std::int32_t column) const { return per_pixel ? column + 1 : segment_end; }
+
+  // At next_event(): the segment's end (take it, plan the next) or, inside a
+  // segment where q changes sign, the exact value at this pixel.
+  [[gnu::noinline]] constexpr void arrive(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c,
+                                          std::int32_t column, std::int32_t c1) {
+    if (column == segment_end) {
+      take(end);
+      plan_or_finish(t, a, c, end, column, c1);
     } else {
-      for (int k = 0; k < 3; ++k) value[k] += step[k];
+      take(evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column), t.edge[2].value_at(column)));
     }
   }
 
  private:
-  [[gnu::noinline]] constexpr void next_point(const TriangleSetup& t, const TriangleAttributes<P>& a,
-                                              const SpanControl& c, std::int32_t c1) {
-    if (column == segment_end) {
-      take(end, column);
-      if (column < c1) plan_segment(t, a, c, end, c1);
-    } else {  // per_pixel
-      take(evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column), t.edge[2].value_at(column)), column);
+  constexpr void take(const GroupPoint& p) {
+    for (int k = 0; k < 3; ++k) value[k] = p.value[k];
+    front = p.front;
+  }
+
+  constexpr void plan_or_finish(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c,
+                                const GroupPoint from, std::int32_t column, std::int32_t c1) {
+    if (column < c1) {
+      plan_segment(t, a, c, from, column, c1);
+    } else {  // the span's last pixel: no event before the walk ends
+      segment_end = c1 + 1;
+      per_pixel = false;
     }
   }
 
-  constexpr void take(const GroupPoint& p, std::int32_t at) {
-    for (int k = 0; k < 3; ++k) value[k] = p.value[k];
-    front = p.front;
-    column = at;
-  }
-
   constexpr void plan_segment(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c,
-                              const GroupPoint from, std::int32_t c1) {  // a copy: `end` is rewritten below
+                              const GroupPoint from, std::int32_t column, std::int32_t c1) {  // a copy: `end` is rewritten below
     // Start from twice the last segment's length (the curvature that shortened
     // it changes slowly along a row), so a row pays about one exact point per
     // segment rather than one per halving.
@@ -159,62 +163,107 @@ struct GroupStepper {
 // Depth along a span: exact at the first pixel, then dz/dx per pixel (or
 // exact at every pixel for triangles too thin for a gradient).
 struct DepthStepper {
-  std::int64_t acc;  // Q1.30 with 32 more fraction bits
-  std::int32_t column;
-
-  constexpr void start(const TriangleSetup& t, std::int32_t c0) {
-    column = c0;
-    const std::int32_t z = exact(t, column);
-    acc = static_cast<std::int64_t>(static_cast<std::uint64_t>(std::int64_t{z}) << 32) + (std::int64_t{1} << 31);
+  // Q1.30 with 32 more fraction bits, rounded, at the span's first column.
+  static constexpr std::int64_t start(const TriangleSetup& t, std::int32_t c0) {
+    const std::int32_t z = exact(t, c0);
+    return static_cast<std::int64_t>(static_cast<std::uint64_t>(std::int64_t{z}) << 32) + (std::int64_t{1} << 31);
   }
   // Out of line and cold: the per-pixel loop keeps no edge values alive for it.
   [[gnu::noinline, gnu::cold]] static constexpr std::int32_t exact(const TriangleSetup& t, std::int32_t column) {
     return mix3(t.z0, t.dz1, t.dz2, barycentric(t, t.edge[1].value_at(column)), barycentric(t, t.edge[2].value_at(column)));
-  }
-  constexpr std::int32_t value(const TriangleSetup& t) const {
-    return t.depth_per_pixel ? exact(t, column) : static_cast<std::int32_t>(acc >> 32);
-  }
-  constexpr void advance(const TriangleSetup& t) {
-    ++column;
-    acc += t.dzdx;
   }
 };
 
 // Walks columns [c0, c1] of one row. `pixel(column, values)` is the pass's
 // kernel. UV and Projectors are fixed at compile time so that each pass gets a
 // loop holding only what it steps: a depth pass steps depth alone.
+//
+// The walk runs from event to event: between two columns where some group
+// needs an exact point, every value is a local stepped by one add per pixel.
 template <int P, typename R, bool UV, bool Projectors, typename PixelFn>
 inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
                       const SpanControl& control, std::int32_t c0, std::int32_t c1, PixelFn&& pixel) {
-  DepthStepper depth{};
-  depth.start(t, c0);
-  GroupStepper<P, R> uv;  // start() sets everything advance() reads
+  constexpr int PS = P > 0 && Projectors ? P : 1;
+  GroupStepper<P, R> uv;  // start() sets everything the walk reads
   if constexpr (UV) uv.start(t, a, control, uv_group, c0, c1);
-  GroupStepper<P, R> projector[P > 0 && Projectors ? P : 1];
+  GroupStepper<P, R> projector[PS];
+  const int j0 = needs.projector_begin, j1 = needs.projector_end;
   if constexpr (Projectors)
-    for (int j = needs.projector_begin; j < needs.projector_end; ++j) projector[j].start(t, a, control, j, c0, c1);
+    for (int j = j0; j < j1; ++j) projector[j].start(t, a, control, j, c0, c1);
 
+  const bool z_exact = t.depth_per_pixel;
+  const std::int64_t dzdx = t.dzdx;
+  std::int64_t z_acc = DepthStepper::start(t, c0);
   PointValues<P> values{};
-  for (std::int32_t column = c0;; ++column) {
-    values.z = depth.value(t);
+  std::int32_t uv_step[2] = {0, 0};
+  std::int32_t uv_event = 0;
+  std::int32_t proj_step[PS][3] = {};
+  std::int32_t proj_event[PS] = {};
+
+  std::int32_t column = c0;
+  for (;;) {
+    // Load the groups into locals; the run ends at the first event.
+    std::int32_t run_end = c1 + 1;
     if constexpr (UV) {
+      uv_event = uv.next_event(column);
+      if (uv_event < run_end) run_end = uv_event;
       values.u = uv.value[0];
       values.v = uv.value[1];
+      uv_step[0] = uv.step[0];
+      uv_step[1] = uv.step[1];
     }
     if constexpr (Projectors) {
-      for (int j = needs.projector_begin; j < needs.projector_end; ++j) {
-        values.s[j] = projector[j].value[0];
-        values.t[j] = projector[j].value[1];
-        values.r[j] = projector[j].value[2];
-        values.front[j] = projector[j].front;
+      for (int j = j0; j < j1; ++j) {
+        const GroupStepper<P, R>& g = projector[j];
+        proj_event[j] = g.next_event(column);
+        if (proj_event[j] < run_end) run_end = proj_event[j];
+        values.s[j] = g.value[0];
+        values.t[j] = g.value[1];
+        values.r[j] = g.value[2];
+        values.front[j] = g.front;
+        for (int k = 0; k < 3; ++k) proj_step[j][k] = g.step[k];
       }
     }
-    pixel(column, values);
-    if (column == c1) break;
-    depth.advance(t);
-    if constexpr (UV) uv.advance(t, a, control, c1);
-    if constexpr (Projectors)
-      for (int j = needs.projector_begin; j < needs.projector_end; ++j) projector[j].advance(t, a, control, c1);
+    for (;;) {  // the pixels of the run: adds only
+      values.z = z_exact ? DepthStepper::exact(t, column) : static_cast<std::int32_t>(z_acc >> 32);
+      pixel(column, values);
+      ++column;
+      z_acc += dzdx;
+      if (column == run_end) break;
+      if constexpr (UV) {
+        values.u += uv_step[0];
+        values.v += uv_step[1];
+      }
+      if constexpr (Projectors) {
+        for (int j = j0; j < j1; ++j) {
+          values.s[j] += proj_step[j][0];
+          values.t[j] += proj_step[j][1];
+          values.r[j] += proj_step[j][2];
+        }
+      }
+    }
+    if (column > c1) return;
+    // Each group either has its event here or takes one more step.
+    if constexpr (UV) {
+      if (column == uv_event) {
+        uv.arrive(t, a, control, column, c1);
+      } else {
+        uv.value[0] = values.u + uv_step[0];
+        uv.value[1] = values.v + uv_step[1];
+      }
+    }
+    if constexpr (Projectors) {
+      for (int j = j0; j < j1; ++j) {
+        GroupStepper<P, R>& g = projector[j];
+        if (column == proj_event[j]) {
+          g.arrive(t, a, control, column, c1);
+        } else {
+          g.value[0] = values.s[j] + proj_step[j][0];
+          g.value[1] = values.t[j] + proj_step[j][1];
+          g.value[2] = values.r[j] + proj_step[j][2];
+        }
+      }
+    }
   }
 }
 

@@ -32,7 +32,7 @@ template <typename F>
       cost.begin();
       const std::uint32_t texels = std::uint32_t{p.map_size} * p.map_size;
       for (std::uint32_t i = 0; i < texels; ++i) map[i] = depth_clear(bits);
-      ShadowDepthKernel<Depth> kernel{map, bits};
+      ShadowDepthKernel<Depth> kernel{map, DepthFormat{bits}};
       draw_pass<F>(scene, PassView{p.map_size, p.map_size, j}, precision, kernel);
       cost.end();
       names << " shadow" << j;
@@ -49,13 +49,13 @@ template <typename F>
     Color::store(target.color + i * Color::per_pixel, Rgb8{0, 0, 0});
   }
   if (precision.fused) {
-    FusedKernel<F, Depth, NoObserver> kernel{target, &scene, lights, ambient, nullptr, nullptr, bits};
+    FusedKernel<F, Depth, NoObserver> kernel{target, &scene, lights, ambient, nullptr, nullptr, DepthFormat{bits}};
     draw_pass<F>(scene, eye, precision, kernel);
     cost.end();
     hal::log_line(names << " fused");
     return RenderStatus::ok;
   }
-  DepthAmbientKernel<F, Depth, NoObserver> depth_pass{target, ambient, bits};
+  DepthAmbientKernel<F, Depth, NoObserver> depth_pass{target, ambient, DepthFormat{bits}};
   draw_pass<F>(scene, eye, precision, depth_pass);
   cost.end();
   names << " depth_ambient";
@@ -68,7 +68,7 @@ template <typename F>
       hal::CostCounter light_cost;
       light_cost.begin();
       clear_mask();
-      LightKernel<F, Depth, NoObserver> light_pass{target, lights[j], j, bits};
+      LightKernel<F, Depth, NoObserver> light_pass{target, lights[j], j, DepthFormat{bits}};
       draw_pass<F>(scene, eye, precision, light_pass);
       light_cost.end();
       names << " light" << j;
@@ -77,7 +77,7 @@ template <typename F>
   hal::CostCounter modulate_cost;
   modulate_cost.begin();
   clear_mask();
-  ModulateKernel<F, Depth, NoObserver> modulate_pass{target, scene.textures, nullptr, nullptr, bits};
+  ModulateKernel<F, Depth, NoObserver> modulate_pass{target, scene.textures, nullptr, nullptr, DepthFormat{bits}};
   draw_pass<F>(scene, eye, precision, modulate_pass);
   modulate_cost.end();
   hal::log_line(names << " modulate");

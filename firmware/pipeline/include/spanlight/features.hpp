@@ -7,8 +7,19 @@
 #include <cstdint>
 
 #include "fixedpoint/reciprocal.hpp"
+#include "spanlight/pixel_inline.hpp"
 
 namespace spanlight {
+
+// Calls fn(j) for each projector j in [begin, end). Unrolled over the
+// compile-time maximum N, so j is a constant in each copy and a walk's
+// per-projector values stay in registers instead of an array indexed at run time.
+template <int N, typename Fn>
+[[gnu::always_inline]] inline void for_each_projector(int begin, int end, Fn&& fn) {
+  for (int j = 0; j < N; ++j) {
+    if (j >= begin && j < end) fn(j);
+  }
+}
 
 enum class PixelFormat : std::uint8_t { rgb888, rgb565 };
 

@@ -21,12 +21,12 @@ template <typename DepthT>
 struct ShadowDepthKernel {
   static constexpr bool may_need_uv = false, may_need_projectors = false;
   DepthT* map;
-  int depth_bits;
+  DepthFormat depth;
   SpanNeeds needs() const { return {false, 0, 0}; }
   void object(const ObjectData&) {}
   template <typename V>
-  void pixel(std::int32_t i, const V& v) const {
-    const std::uint32_t d = depth_store(v.z, depth_bits);
+  SPANLIGHT_PIXEL_INLINE void pixel(std::int32_t i, const V& v) const {
+    const std::uint32_t d = depth.store(v.z);
     if (d < map[i]) map[i] = static_cast<DepthT>(d);
   }
 };
@@ -37,13 +37,13 @@ struct DepthAmbientKernel {
   static constexpr bool may_need_uv = false, may_need_projectors = false;
   FrameTarget<F::format, DepthT> target;
   Rgb8 ambient;
-  int depth_bits;
+  DepthFormat depth;
   typename Color::Storage stored_ambient[Color::per_pixel] = {};  // packed once, copied per pixel
   SpanNeeds needs() const { return {false, 0, 0}; }
   void object(const ObjectData&) { Color::store(stored_ambient, ambient); }
   template <typename V>
-  void pixel(std::int32_t i, const V& v) const {
-    const std::uint32_t d = depth_store(v.z, depth_bits);
+  SPANLIGHT_PIXEL_INLINE void pixel(std::int32_t i, const V& v) const {
+    const std::uint32_t d = depth.store(v.z);
     if (d < target.depth[i]) {
       target.depth[i] = static_cast<DepthT>(d);
       for (int k = 0; k < Color::per_pixel; ++k) target.color[i * Color::per_pixel + k] = stored_ambient[k];
@@ -52,6 +52,15 @@ struct DepthAmbientKernel {
   }
 };
 
+// The z-equal test of the light and modulate passes: the depth this triangle
+// stores here is the one the depth pass kept, and no other surface with the
+// same depth claimed the pixel first.
+template <typename Target>
+SPANLIGHT_PIXEL_INLINE bool z_equal_and_first(const Target& target, const DepthFormat& depth, std::int32_t i, std::int32_t z) {
+  const std::uint32_t d = depth.store(z);
+  return d != depth.clear && d == target.depth[i] && claim_pixel(target.tie_mask, i);
+}
+
 template <typename F, typename DepthT, typename Observer>
 struct LightKernel {
   using Color = ColorTraits<F::format>;
@@ -59,15 +68,14 @@ struct LightKernel {
   FrameTarget<F::format, DepthT> target;
   LightContext light;
   int projector;
-  int depth_bits;
+  DepthFormat depth;
   SpanNeeds needs() const { return {false, projector, projector + 1}; }
   void object(const ObjectData&) {}
   template <typename V>
-  void pixel(std::int32_t i, const V& v) const {
-    const std::uint32_t d = depth_store(v.z, depth_bits);
-    if (d == depth_clear(depth_bits) || d != target.depth[i] || !claim_pixel(target.tie_mask, i)) return;
+  SPANLIGHT_PIXEL_INLINE void pixel(std::int32_t i, const V& v) const {
+    if (!z_equal_and_first(target, depth, i, v.z)) return;
     Observer::touched(pass_light, i);
-    const Rgb8 add = projector_light<F, DepthT>(light, v, projector, depth_bits);
+    const Rgb8 add = projector_light<F, DepthT>(light, v, projector, depth.bits);
     if ((add.r | add.g | add.b) == 0) return;
     typename Color::Storage* p = target.color + i * Color::per_pixel;
     Color::store(p, add_light(Color::load(p), add));
@@ -82,16 +90,15 @@ struct ModulateKernel {
   const TextureData* textures;
   const ObjectData* current = nullptr;
   const TextureData* texture = nullptr;
-  int depth_bits;
+  DepthFormat depth;
   SpanNeeds needs() const { return {current->texture >= 0, 0, 0}; }
   void object(const ObjectData& o) {
     current = &o;
     texture = o.texture >= 0 ? &textures[o.texture] : nullptr;
   }
   template <typename V>
-  void pixel(std::int32_t i, const V& v) const {
-    const std::uint32_t d = depth_store(v.z, depth_bits);
-    if (d == depth_clear(depth_bits) || d != target.depth[i] || !claim_pixel(target.tie_mask, i)) return;
+  SPANLIGHT_PIXEL_INLINE void pixel(std::int32_t i, const V& v) const {
+    if (!z_equal_and_first(target, depth, i, v.z)) return;
     Observer::touched(pass_modulate, i);
     typename Color::Storage* p = target.color + i * Color::per_pixel;
     Color::store(p, modulate(Color::load(p), surface_colour<F>(*current, texture, v)));
@@ -109,23 +116,23 @@ struct FusedKernel {
   Rgb8 ambient;
   const ObjectData* current = nullptr;
   const TextureData* texture = nullptr;
-  int depth_bits;
+  DepthFormat depth;
   SpanNeeds needs() const { return {current->texture >= 0, 0, scene->projector_count}; }
   void object(const ObjectData& o) {
     current = &o;
     texture = o.texture >= 0 ? &scene->textures[o.texture] : nullptr;
   }
   template <typename V>
-  void pixel(std::int32_t i, const V& v) const {
-    const std::uint32_t d = depth_store(v.z, depth_bits);
+  SPANLIGHT_PIXEL_INLINE void pixel(std::int32_t i, const V& v) const {
+    const std::uint32_t d = depth.store(v.z);
     if (d >= target.depth[i]) return;
     target.depth[i] = static_cast<DepthT>(d);
     Observer::touched(pass_fused, i);
     Rgb8 c = Color::quantize(ambient);
-    for (int j = 0; j < scene->projector_count; ++j) {
-      const Rgb8 add = projector_light<F, DepthT>(lights[j], v, j, depth_bits);
+    for_each_projector<F::max_projectors>(0, scene->projector_count, [&](int j) {
+      const Rgb8 add = projector_light<F, DepthT>(lights[j], v, j, depth.bits);
       if ((add.r | add.g | add.b) != 0) c = Color::quantize(add_light(c, add));
-    }
+    });
     Color::store(target.color + i * Color::per_pixel, modulate(c, surface_colour<F>(*current, texture, v)));
   }
 };

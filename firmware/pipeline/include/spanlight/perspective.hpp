@@ -105,4 +105,75 @@ constexpr GroupPoint evaluate_group(const TriangleSetup& t, const TriangleAttrib
   return out;
 }
 
+// Between two exact points a < b of one row. The group's divisor E (1/w for
+// uv, q/w for a projector, up to a constant) is linear in x, and so is each
+// value's numerator f * E; when E > 0 at both ends, exactly
+//
+//   f(x) = f_a + (f_b - f_a) * gamma,   gamma = (x - a) E_b / ((b - x) E_a + (x - a) E_b)
+//
+// (the 1-D perspective-correct interpolation): one reciprocal and one product
+// per value at each subdivision point, where evaluate_group needs edge values,
+// barycentrics, three weights and two reciprocals. gamma is in [0, 1], so f
+// stays between f_a and f_b: no clamp is ever reached inside.
+//
+// Error: num and den are cut to 32 bits together (2^-31 relative each), the
+// reciprocal adds R's relative error e and the product a truncation of
+// 2^-30, so |gamma error| <= gamma (e + 2^-30) + 2^-30 and the value is off by
+// at most |f_b - f_a| (e + 2^-29) + 1 unit from the exact ratio of the ends.
+struct RowInterpolation {
+  std::int32_t a, length;    // first column and b - a > 0
+  std::uint32_t e_a, e_b;    // the divisors at a and b, scaled together below 2^31
+  std::int32_t f_a[3], df[3];  // |f| < 2^30 at both ends, so |df| < 2^31
+
+  constexpr void init(std::int32_t column_a, std::int32_t column_b, const GroupPoint& pa, const GroupPoint& pb) {
+    a = column_a;
+    length = column_b - column_a;
+    const auto da = static_cast<std::uint64_t>(pa.denominator), db = static_cast<std::uint64_t>(pb.denominator);
+    const int excess = fixedpoint::bit_length(da > db ? da : db) - 31;
+    const int shift = excess > 0 ? excess : 0;
+    e_a = static_cast<std::uint32_t>(da >> shift);
+    e_b = static_cast<std::uint32_t>(db >> shift);
+    for (int k = 0; k < 3; ++k) {
+      f_a[k] = pa.value[k];
+      df[k] = pb.value[k] - pa.value[k];
+    }
+  }
+
+  // The point at column x in [a, b]; its denominator is (b - x) E_a + (x - a) E_b,
+  // the divisor up to the row's constant (linear_enough() compares ratios only).
+  template <typename R>
+  constexpr GroupPoint at(std::int32_t x) const {
+    const auto before = static_cast<std::uint32_t>(x - a), after = static_cast<std::uint32_t>(length) - before;
+    const std::uint64_t num = fixedpoint::mul_u32(before, e_b);  // < 2^12 * 2^31
+    const std::uint64_t den = num + fixedpoint::mul_u32(after, e_a);
+    GroupPoint out;
+    out.denominator = static_cast<std::int64_t>(den);
+    out.front = true;
+    if (after == 0 || before == 0) {  // the ends themselves, exactly
+      for (int k = 0; k < 3; ++k) out.value[k] = after == 0 ? f_a[k] + df[k] : f_a[k];
+      return out;
+    }
+    // Both cut to the 32 bits below den's leading one (den < 2^43, so n >= 21),
+    // and for a divisor in [2^31, 2^32) R returns shift 62: gamma is the high word.
+    const int n = fixedpoint::clz64(den);
+    const auto den_top = static_cast<std::uint32_t>((den << n) >> 32);
+    const auto num_top = static_cast<std::uint32_t>((num << n) >> 32);
+    const fixedpoint::Reciprocal rcp = R::of(den_top);
+    const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(num_top, rcp.mantissa) >> 32);  // Q0.30
+    for (int k = 0; k < 3; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
+    return out;
+  }
+};
+
+// Whether two exact points of a group bound a row stretch RowInterpolation can
+// fill: q > 0 at both (so all along: q/w is linear) and no value clamped.
+constexpr bool interpolable(const GroupPoint& p, const GroupPoint& q) {
+  if (!p.front || !q.front || p.denominator <= 0 || q.denominator <= 0) return false;
+  for (int k = 0; k < 3; ++k) {
+    if (p.value[k] <= -proj_limit || p.value[k] >= proj_limit || q.value[k] <= -proj_limit || q.value[k] >= proj_limit)
+      return false;
+  }
+  return true;
+}
+
 }  // namespace spanlight

@@ -32,7 +32,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameTarget<F::forma
       if (map == nullptr) return RenderStatus::missing_shadow_map;
       const std::uint32_t texels = std::uint32_t{p.map_size} * p.map_size;
       for (std::uint32_t i = 0; i < texels; ++i) map[i] = static_cast<DepthT>(depth_clear(bits));
-      ShadowDepthKernel<DepthT> kernel{map, bits};
+      ShadowDepthKernel<DepthT> kernel{map, DepthFormat{bits}};
       draw_pass<F>(scene, PassView{p.map_size, p.map_size, j}, precision, kernel);
       lights[j].shadow_map = map;
     }
@@ -47,11 +47,11 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameTarget<F::forma
   const Rgb8 ambient{scene.ambient[0], scene.ambient[1], scene.ambient[2]};
 
   if (precision.fused) {
-    FusedKernel<F, DepthT, Observer> kernel{target, &scene, lights, ambient, nullptr, nullptr, bits};
+    FusedKernel<F, DepthT, Observer> kernel{target, &scene, lights, ambient, nullptr, nullptr, DepthFormat{bits}};
     draw_pass<F>(scene, eye, precision, kernel);
     return RenderStatus::ok;
   }
-  DepthAmbientKernel<F, DepthT, Observer> depth_pass{target, ambient, bits};
+  DepthAmbientKernel<F, DepthT, Observer> depth_pass{target, ambient, DepthFormat{bits}};
   draw_pass<F>(scene, eye, precision, depth_pass);
   if (target.tie_mask == nullptr) return RenderStatus::missing_tie_mask;
   const std::uint32_t mask_bytes = tie_mask_bytes(scene.width, scene.height);
@@ -61,12 +61,12 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameTarget<F::forma
   if constexpr (F::max_projectors > 0) {
     for (int j = 0; j < scene.projector_count; ++j) {
       clear_mask();
-      LightKernel<F, DepthT, Observer> light_pass{target, lights[j], j, bits};
+      LightKernel<F, DepthT, Observer> light_pass{target, lights[j], j, DepthFormat{bits}};
       draw_pass<F>(scene, eye, precision, light_pass);
     }
   }
   clear_mask();
-  ModulateKernel<F, DepthT, Observer> modulate_pass{target, scene.textures, nullptr, nullptr, bits};
+  ModulateKernel<F, DepthT, Observer> modulate_pass{target, scene.textures, nullptr, nullptr, DepthFormat{bits}};
   draw_pass<F>(scene, eye, precision, modulate_pass);
   return RenderStatus::ok;
 }

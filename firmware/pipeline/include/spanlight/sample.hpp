@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "spanlight/pixel_inline.hpp"
 #include "spanlight/prepared_scene.hpp"
 
 namespace spanlight {
@@ -15,7 +16,7 @@ struct Rgb8 {
 };
 
 // Index along one axis after wrapping; -1 means "outside, black" (border).
-constexpr std::int32_t wrap_index(std::int32_t i, std::int32_t size, Wrap wrap) {
+[[gnu::always_inline]] constexpr std::int32_t wrap_index(std::int32_t i, std::int32_t size, Wrap wrap) {
   switch (wrap) {
     case Wrap::repeat: return i & (size - 1);  // power-of-two sizes only (validated by the scene loader)
     case Wrap::clamp: return i < 0 ? 0 : (i >= size ? size - 1 : i);
@@ -29,11 +30,11 @@ struct Texel16 {
 };
 
 // Row start of texel row `y_from_bottom` (already wrapped into the image).
-inline const std::uint8_t* texel_row(const TextureData& tex, std::int32_t y_from_bottom) {
+SPANLIGHT_PIXEL_INLINE const std::uint8_t* texel_row(const TextureData& tex, std::int32_t y_from_bottom) {
   return tex.rgb + static_cast<std::uint32_t>(tex.height - 1 - y_from_bottom) * tex.width * 3u;
 }
 
-inline Rgb8 fetch(const TextureData& tex, std::int32_t x, std::int32_t y_from_bottom, Wrap wrap) {
+SPANLIGHT_PIXEL_INLINE Rgb8 fetch(const TextureData& tex, std::int32_t x, std::int32_t y_from_bottom, Wrap wrap) {
   const std::int32_t xi = wrap_index(x, tex.width, wrap);
   const std::int32_t yi = wrap_index(y_from_bottom, tex.height, wrap);
   if (xi < 0 || yi < 0) return {0, 0, 0};
@@ -42,12 +43,12 @@ inline Rgb8 fetch(const TextureData& tex, std::int32_t x, std::int32_t y_from_bo
 }
 
 // Sub-texel weight in [0, 256) from a coordinate with `frac` fraction bits.
-constexpr std::uint32_t weight8(std::int32_t coord, int frac) {
+[[gnu::always_inline]] constexpr std::uint32_t weight8(std::int32_t coord, int frac) {
   return frac >= 8 ? (static_cast<std::uint32_t>(coord) >> (frac - 8)) & 255u
                    : (static_cast<std::uint32_t>(coord) << (8 - frac)) & 255u;
 }
 
-inline Rgb8 sample_nearest(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+SPANLIGHT_PIXEL_INLINE Rgb8 sample_nearest(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
   return fetch(tex, u >> frac, v >> frac, wrap);
 }
 
@@ -87,7 +88,7 @@ inline Texel16 sample16_bilinear(const TextureData& tex, std::int32_t u, std::in
   return {blend(c00.r, c10.r, c01.r, c11.r), blend(c00.g, c10.g, c01.g, c11.g), blend(c00.b, c10.b, c01.b, c11.b)};
 }
 
-inline Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+SPANLIGHT_PIXEL_INLINE Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
   const Texel16 t = sample16_bilinear(tex, u, v, frac, wrap);
   auto round8 = [](std::uint32_t c) { return static_cast<std::uint8_t>((c + 32768u) >> 16); };
   return {round8(t.r), round8(t.g), round8(t.b)};
@@ -95,7 +96,7 @@ inline Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t
 
 // Texel channels times 2^16, unrounded when bilinear.
 template <bool Bilinear>
-inline Texel16 sample16(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+SPANLIGHT_PIXEL_INLINE Texel16 sample16(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
   if constexpr (Bilinear) {
     if (tex.filter == Filter::bilinear) return sample16_bilinear(tex, u, v, frac, wrap);
   }
@@ -104,7 +105,7 @@ inline Texel16 sample16(const TextureData& tex, std::int32_t u, std::int32_t v, 
 }
 
 template <bool Bilinear>
-inline Rgb8 sample(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+SPANLIGHT_PIXEL_INLINE Rgb8 sample(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
   if constexpr (Bilinear) {
     if (tex.filter == Filter::bilinear) return sample_bilinear(tex, u, v, frac, wrap);
   }

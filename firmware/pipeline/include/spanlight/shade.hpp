@@ -16,12 +16,12 @@
 namespace spanlight {
 
 // round(a * b / 255) for a, b in [0, 255], exact (Blinn's trick).
-constexpr std::uint8_t mul255(std::uint32_t a, std::uint32_t b) {
+[[gnu::always_inline]] constexpr std::uint8_t mul255(std::uint32_t a, std::uint32_t b) {
   const std::uint32_t t = a * b + 128u;
   return static_cast<std::uint8_t>((t + (t >> 8)) >> 8);
 }
 
-constexpr std::uint8_t add_saturate(std::uint32_t a, std::uint32_t b) {
+[[gnu::always_inline]] constexpr std::uint8_t add_saturate(std::uint32_t a, std::uint32_t b) {
   const std::uint32_t s = a + b;
   return static_cast<std::uint8_t>(s > 255u ? 255u : s);
 }
@@ -34,7 +34,7 @@ struct LightContext {
 
 // Light one projector adds at a pixel, in 8-bit levels (before saturation).
 template <typename F, typename DepthT, int P>
-inline Rgb8 projector_light(const LightContext& ctx, const PointValues<P>& v, int j, int depth_bits) {
+SPANLIGHT_PIXEL_INLINE Rgb8 projector_light(const LightContext& ctx, const PointValues<P>& v, int j, int depth_bits) {
   constexpr std::int32_t one = 1 << proj_frac_bits;
   if (!v.front[j]) return {0, 0, 0};                                       // 1. q > 0
   if (v.s[j] < 0 || v.s[j] > one || v.t[j] < 0 || v.t[j] > one) return {0, 0, 0};  // 2. inside the sides
@@ -61,17 +61,17 @@ inline Rgb8 projector_light(const LightContext& ctx, const PointValues<P>& v, in
           channel(ctx.projector->color[2], texel.b)};
 }
 
-inline Rgb8 add_light(Rgb8 base, Rgb8 light) {
+SPANLIGHT_PIXEL_INLINE Rgb8 add_light(Rgb8 base, Rgb8 light) {
   return {add_saturate(base.r, light.r), add_saturate(base.g, light.g), add_saturate(base.b, light.b)};
 }
 
-inline Rgb8 modulate(Rgb8 light, Rgb8 surface) {
+SPANLIGHT_PIXEL_INLINE Rgb8 modulate(Rgb8 light, Rgb8 surface) {
   return {mul255(light.r, surface.r), mul255(light.g, surface.g), mul255(light.b, surface.b)};
 }
 
 // object colour * texture(u, v), 8-bit levels.
 template <typename F, int P>
-inline Rgb8 surface_colour(const ObjectData& object, const TextureData* texture, const PointValues<P>& v) {
+SPANLIGHT_PIXEL_INLINE Rgb8 surface_colour(const ObjectData& object, const TextureData* texture, const PointValues<P>& v) {
   if (texture == nullptr) return {object.color[0], object.color[1], object.color[2]};
   const Rgb8 t = sample<F::bilinear>(*texture, v.u, v.v, object.uv_frac_bits, texture->wrap);
   if ((object.color[0] & object.color[1] & object.color[2]) == 255) return t;  // white: mul255 is the identity

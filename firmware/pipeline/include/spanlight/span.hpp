@@ -40,11 +40,13 @@ struct SpanControl {
 };
 
 // Linear stepping between two points deviates from the perspective-correct
-// value by at most about |delta texels| * |delta d| / (4 min d), d the
-// screen-linear divisor (Heckbert & Moreton '91). True when that is within
-// 2^-tolerance_log2 texel. delta_texels8 has 8 fraction bits.
-constexpr bool linear_enough(std::uint64_t delta_texels8, std::int64_t d0, std::int64_t d1, int tolerance_log2) {
-  if (tolerance_log2 == 0 || d0 <= 0 || d1 <= 0) return true;  // sign changes are handled per pixel
+// value by at most |delta texels| * |delta d| / (4 min d), d the screen-linear
+// divisor (Heckbert & Moreton '91). Returns 0 when that exceeds
+// 2^-tolerance_log2 texel, 1 when it is within, 2 when it is within a quarter
+// of it: the deviation grows with the square of the length, so a segment twice
+// as long is worth trying next. delta_texels8 has 8 fraction bits.
+constexpr int linear_headroom(std::uint64_t delta_texels8, std::int64_t d0, std::int64_t d1, int tolerance_log2) {
+  if (tolerance_log2 == 0 || d0 <= 0 || d1 <= 0) return 2;  // sign changes are handled per pixel
   const std::uint64_t larger = static_cast<std::uint64_t>(d0 > d1 ? d0 : d1);
   const int excess = fixedpoint::bit_length(larger) - 31;  // bring d below 2^31
   const int s = excess > 0 ? excess : 0;
@@ -53,7 +55,8 @@ constexpr bool linear_enough(std::uint64_t delta_texels8, std::int64_t d0, std::
   const std::uint64_t smaller = a < b ? a : b;
   if (delta_texels8 > 0xFFFFFFFFu) delta_texels8 = 0xFFFFFFFFu;
   // |dt| * |dd| <= min * 2^(10 - tol): left < 2^63, right < 2^41.
-  return delta_texels8 * delta_d <= (smaller << 10) >> tolerance_log2;
+  const std::uint64_t drift = delta_texels8 * delta_d, allowed = (smaller << 10) >> tolerance_log2;
+  return drift > allowed ? 0 : (drift <= allowed >> 2 ? 2 : 1);
 }
 
 // The texel distance between two points of a group, 8 fraction bits.
@@ -104,7 +107,16 @@ struct GroupStepper {
                        std::int32_t c0, std::int32_t c1) {
     group = g;
     trial_length = 1 << c.span_log2;
-    const GroupPoint first = evaluate_group<P, R>(t, a, group, t.edge[1].value_at(c0), t.edge[2].value_at(c0));
+    GroupPoint first = exact_at(t, a, c0);
+    interpolated = false;
+    if (c0 < c1) {
+      const GroupPoint last = exact_at(t, a, c1);
+      if (interpolable(first, last)) {  // the usual case: the rest of the row's points are cheap
+        row.init(c0, c1, first, last);
+        interpolated = true;
+        first = row.at<R>(c0);  // the same values; the denominator on the row's scale
+      }
+    }
     take(first);
     plan_or_finish(t, a, c, first, c0, c1);
   }
@@ -120,11 +132,21 @@ struct GroupStepper {
       take(end);
       plan_or_finish(t, a, c, end, column, c1);
     } else {
-      take(evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column), t.edge[2].value_at(column)));
+      take(point_at(t, a, column));
     }
   }
 
  private:
+  RowInterpolation row;  // between the span's ends, when `interpolated`
+  bool interpolated;
+
+  constexpr GroupPoint exact_at(const TriangleSetup& t, const TriangleAttributes<P>& a, std::int32_t column) const {
+    return evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column), t.edge[2].value_at(column));
+  }
+  constexpr GroupPoint point_at(const TriangleSetup& t, const TriangleAttributes<P>& a, std::int32_t column) const {
+    return interpolated ? row.at<R>(column) : exact_at(t, a, column);
+  }
+
   constexpr void take(const GroupPoint& p) {
     for (int k = 0; k < 3; ++k) value[k] = p.value[k];
     front = p.front;
@@ -142,18 +164,22 @@ struct GroupStepper {
 
   constexpr void plan_segment(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c,
                               const GroupPoint from, std::int32_t column, std::int32_t c1) {  // a copy: `end` is rewritten below
-    // Start from twice the last segment's length (the curvature that shortened
-    // it changes slowly along a row), so a row pays about one exact point per
-    // segment rather than one per halving.
+    // Start from the last segment's length, doubled when that one drifted
+    // less than a quarter of the tolerance: the curvature that set it changes
+    // slowly along a row, so most first trials are the segment.
     const std::int32_t span_len = 1 << c.span_log2;
     std::int32_t len = c1 - column < trial_length ? c1 - column : trial_length;
+    int headroom = 2;
     for (;;) {  // halve until linear stepping is close enough
-      end = evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column + len), t.edge[2].value_at(column + len));
-      if (len == 1 || (!saturation_breaks_linearity(from, end) && linear_enough(texel_delta8(from, end, group, c), from.denominator, end.denominator, c.tolerance_log2)))
-        break;
+      end = point_at(t, a, column + len);
+      if (len == 1) break;
+      if (interpolated || !saturation_breaks_linearity(from, end)) {
+        headroom = linear_headroom(texel_delta8(from, end, group, c), from.denominator, end.denominator, c.tolerance_log2);
+        if (headroom > 0) break;
+      }
       len = (len + 1) >> 1;
     }
-    trial_length = 2 * len < span_len ? 2 * len : span_len;
+    trial_length = headroom == 2 ? (2 * len < span_len ? 2 * len : span_len) : len;
     segment_end = column + len;
     per_pixel = from.front != end.front;
     for (int k = 0; k < 3; ++k) step[k] = per_pixel ? 0 : step_of(from.value[k], end.value[k], len);
@@ -189,7 +215,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
   GroupStepper<P, R> projector[PS];
   const int j0 = needs.projector_begin, j1 = needs.projector_end;
   if constexpr (Projectors)
-    for (int j = j0; j < j1; ++j) projector[j].start(t, a, control, j, c0, c1);
+    for_each_projector<PS>(j0, j1, [&](int j) { projector[j].start(t, a, control, j, c0, c1); });
 
   const bool z_exact = t.depth_per_pixel;
   const std::int64_t dzdx = t.dzdx;
@@ -213,7 +239,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
       uv_step[1] = uv.step[1];
     }
     if constexpr (Projectors) {
-      for (int j = j0; j < j1; ++j) {
+      for_each_projector<PS>(j0, j1, [&](int j) {
         const GroupStepper<P, R>& g = projector[j];
         proj_event[j] = g.next_event(column);
         if (proj_event[j] < run_end) run_end = proj_event[j];
@@ -222,7 +248,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
         values.r[j] = g.value[2];
         values.front[j] = g.front;
         for (int k = 0; k < 3; ++k) proj_step[j][k] = g.step[k];
-      }
+      });
     }
     for (;;) {  // the pixels of the run: adds only
       values.z = z_exact ? DepthStepper::exact(t, column) : static_cast<std::int32_t>(z_acc >> 32);
@@ -235,11 +261,11 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
         values.v += uv_step[1];
       }
       if constexpr (Projectors) {
-        for (int j = j0; j < j1; ++j) {
+        for_each_projector<PS>(j0, j1, [&](int j) {
           values.s[j] += proj_step[j][0];
           values.t[j] += proj_step[j][1];
           values.r[j] += proj_step[j][2];
-        }
+        });
       }
     }
     if (column > c1) return;
@@ -253,7 +279,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
       }
     }
     if constexpr (Projectors) {
-      for (int j = j0; j < j1; ++j) {
+      for_each_projector<PS>(j0, j1, [&](int j) {
         GroupStepper<P, R>& g = projector[j];
         if (column == proj_event[j]) {
           g.arrive(t, a, control, column, c1);
@@ -262,7 +288,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
           g.value[1] = values.t[j] + proj_step[j][1];
           g.value[2] = values.r[j] + proj_step[j][2];
         }
-      }
+      });
     }
   }
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "spanlight/clip.hpp"
 #include "spanlight/features.hpp"
@@ -80,7 +81,24 @@ inline void with_pixel_kernel(Kernel& kernel, Fn&& fn) {
   }
 }
 
-// Kernel interface: needs(), object(const ObjectData&), pixel(index, values).
+// A kernel at one row: columns become pixel indices. run() is there when the
+// kernel has one (see PixelRun). Kernel is const for a copy (with_pixel_kernel).
+template <int P, typename Kernel>
+struct RowPixels {
+  Kernel& kernel;
+  std::int32_t row_start;
+  SPANLIGHT_PIXEL_INLINE void operator()(std::int32_t column, const PointValues<P>& values) const {
+    kernel.pixel(row_start + column, values);
+  }
+  SPANLIGHT_PIXEL_INLINE std::int64_t run(std::int32_t column, std::int32_t count, const PixelRun<P>& r) const
+    requires requires(Kernel& k) { k.run(std::int32_t{0}, std::int32_t{1}, r); }
+  {
+    return kernel.run(row_start + column, count, r);
+  }
+};
+
+// Kernel interface: needs(), object(const ObjectData&), pixel(index, values),
+// and optionally run(first index, count, PixelRun) returning the run's z_acc.
 template <typename F, typename Kernel>
 inline void draw_pass(const PreparedScene& scene, const PassView& view, const Precision& precision, Kernel& kernel) {
   constexpr int P = F::max_projectors;
@@ -142,8 +160,7 @@ inline void draw_pass(const PreparedScene& scene, const PassView& view, const Pr
             rasterize_rows(setup, view.width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
               const std::int32_t row_start = row * view.width;
               walk_span<P, R, decltype(uv)::value, decltype(projectors)::value>(
-                  setup, attrs, needs, control, c0, c1,
-                  [&](std::int32_t column, const PointValues<P>& values) { pixel_kernel.pixel(row_start + column, values); });
+                  setup, attrs, needs, control, c0, c1, RowPixels<P, std::remove_reference_t<decltype(pixel_kernel)>>{pixel_kernel, row_start});
             });
           });
         });

@@ -50,6 +50,10 @@ struct DepthAmbientKernel {
       Observer::touched(pass_depth_ambient, i);
     }
   }
+  template <int P>
+  std::int64_t run(std::int32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    return for_each_run_pixel(r, count, [&](std::int32_t k, const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { pixel(i + k, v); });
+  }
 };
 
 // The z-equal test of the light and modulate passes: the depth this triangle
@@ -80,6 +84,15 @@ struct LightKernel {
     typename Color::Storage* p = target.color + i * Color::per_pixel;
     Color::store(p, add_light(Color::load(p), add));
   }
+  template <int P>
+  std::int64_t run(std::int32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    if (!r.first.front[projector]) {  // behind the projector all run long (q/w is linear): claims only
+      return for_each_run_pixel(r, count, [&](std::int32_t k, const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE {
+        if (z_equal_and_first(target, depth, i + k, v.z)) Observer::touched(pass_light, i + k);
+      });
+    }
+    return for_each_run_pixel(r, count, [&](std::int32_t k, const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { pixel(i + k, v); });
+  }
 };
 
 template <typename F, typename DepthT, typename Observer>
@@ -98,10 +111,36 @@ struct ModulateKernel {
   }
   template <typename V>
   SPANLIGHT_PIXEL_INLINE void pixel(std::int32_t i, const V& v) const {
+    modulate_with(i, v, [&](const V& at) SPANLIGHT_LAMBDA_INLINE { return surface_colour<F>(*current, texture, at); });
+  }
+  // The object's choices (texture or colour, filter, wrap) made once per run.
+  template <int P>
+  std::int64_t run(std::int32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    auto each = [&](auto&& surface) SPANLIGHT_LAMBDA_INLINE {
+      return for_each_run_pixel(r, count, [&](std::int32_t k, const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { modulate_with(i + k, v, surface); });
+    };
+    if (texture == nullptr) {
+      const Rgb8 colour{current->color[0], current->color[1], current->color[2]};
+      return each([colour](const PointValues<P>&) SPANLIGHT_LAMBDA_INLINE { return colour; });
+    }
+    if constexpr (F::bilinear) {
+      const bool white = (current->color[0] & current->color[1] & current->color[2]) == 255;
+      if (texture->filter == Filter::bilinear && texture->wrap == Wrap::repeat && white) {
+        const TextureData& tex = *texture;
+        const int frac = current->uv_frac_bits;
+        return each([&](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return unpack_rgb(sample_bilinear_repeat_packed(tex, v.u, v.v, frac)); });
+      }
+    }
+    return each([&](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return surface_colour<F>(*current, texture, v); });
+  }
+
+ private:
+  template <typename V, typename Surface>
+  SPANLIGHT_PIXEL_INLINE void modulate_with(std::int32_t i, const V& v, Surface&& surface) const {
     if (!z_equal_and_first(target, depth, i, v.z)) return;
     Observer::touched(pass_modulate, i);
     typename Color::Storage* p = target.color + i * Color::per_pixel;
-    Color::store(p, modulate(Color::load(p), surface_colour<F>(*current, texture, v)));
+    Color::store(p, modulate(Color::load(p), surface(v)));
   }
 };
 
@@ -129,11 +168,15 @@ struct FusedKernel {
     target.depth[i] = static_cast<DepthT>(d);
     Observer::touched(pass_fused, i);
     Rgb8 c = Color::quantize(ambient);
-    for_each_projector<F::max_projectors>(0, scene->projector_count, [&](int j) {
+    for_each_projector<F::max_projectors>(0, scene->projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE {
       const Rgb8 add = projector_light<F, DepthT>(lights[j], v, j, depth.bits);
       if ((add.r | add.g | add.b) != 0) c = Color::quantize(add_light(c, add));
     });
     Color::store(target.color + i * Color::per_pixel, modulate(c, surface_colour<F>(*current, texture, v)));
+  }
+  template <int P>
+  std::int64_t run(std::int32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    return for_each_run_pixel(r, count, [&](std::int32_t k, const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { pixel(i + k, v); });
   }
 };
 

@@ -7,3 +7,6 @@
 // them. The bilinear fetch is the exception (sample.hpp): inlined it makes the
 // loop spill more than the call costs.
 #define SPANLIGHT_PIXEL_INLINE [[gnu::always_inline]] inline
+
+// The same for the lambdas a run loop calls at each pixel: [&](...) SPANLIGHT_LAMBDA_INLINE { ... }.
+#define SPANLIGHT_LAMBDA_INLINE __attribute__((always_inline))

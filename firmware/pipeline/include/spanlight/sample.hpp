@@ -53,20 +53,22 @@ SPANLIGHT_PIXEL_INLINE Rgb8 sample_nearest(const TextureData& tex, std::int32_t 
 }
 
 // The four-texel blend before rounding: 8-bit channels times weights summing
-// to 2^16. Projectors keep these bits through the colour multiply.
-inline Texel16 sample16_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+// to 2^16. Projectors keep these bits through the colour multiply. W is the
+// wrap mode when the caller knows it (projectors: border; a run's texture).
+template <Wrap W>
+SPANLIGHT_PIXEL_INLINE Texel16 sample16_bilinear_as(const TextureData& tex, std::int32_t u, std::int32_t v, int frac) {
   const std::int32_t half = frac > 0 ? (1 << (frac - 1)) : 0;  // move to texel centres
   const std::int32_t x = u - half, y = v - half;
   std::int32_t x0 = x >> frac, y0 = y >> frac;
   const std::uint32_t fx = weight8(x, frac), fy = weight8(y, frac);
   std::int32_t x1 = x0 + 1, y1 = y0 + 1;
   Rgb8 c00, c10, c01, c11;
-  if (wrap != Wrap::border || (x0 >= 0 && y0 >= 0 && x1 < tex.width && y1 < tex.height)) {
+  if (W != Wrap::border || (x0 >= 0 && y0 >= 0 && x1 < tex.width && y1 < tex.height)) {
     // Fast path: wrap each axis once, then four direct reads.
-    x0 = wrap_index(x0, tex.width, wrap);
-    x1 = wrap_index(x1, tex.width, wrap);
-    y0 = wrap_index(y0, tex.height, wrap);
-    y1 = wrap_index(y1, tex.height, wrap);
+    x0 = wrap_index(x0, tex.width, W);
+    x1 = wrap_index(x1, tex.width, W);
+    y0 = wrap_index(y0, tex.height, W);
+    y1 = wrap_index(y1, tex.height, W);
     const std::uint8_t* row0 = texel_row(tex, y0);
     const std::uint8_t* row1 = texel_row(tex, y1);
     const std::uint32_t i0 = static_cast<std::uint32_t>(x0) * 3u, i1 = static_cast<std::uint32_t>(x1) * 3u;
@@ -76,10 +78,10 @@ inline Texel16 sample16_bilinear(const TextureData& tex, std::int32_t u, std::in
     c11 = {row1[i1], row1[i1 + 1], row1[i1 + 2]};
   } else {
     // Border at the image's edge: texels outside are black, one check each.
-    c00 = fetch(tex, x0, y0, wrap);
-    c10 = fetch(tex, x1, y0, wrap);
-    c01 = fetch(tex, x0, y1, wrap);
-    c11 = fetch(tex, x1, y1, wrap);
+    c00 = fetch(tex, x0, y0, W);
+    c10 = fetch(tex, x1, y0, W);
+    c01 = fetch(tex, x0, y1, W);
+    c11 = fetch(tex, x1, y1, W);
   }
   const std::uint32_t w00 = (256 - fx) * (256 - fy), w10 = fx * (256 - fy), w01 = (256 - fx) * fy, w11 = fx * fy;
   auto blend = [&](std::uint8_t a, std::uint8_t b, std::uint8_t c, std::uint8_t d) {
@@ -88,19 +90,49 @@ inline Texel16 sample16_bilinear(const TextureData& tex, std::int32_t u, std::in
   return {blend(c00.r, c10.r, c01.r, c11.r), blend(c00.g, c10.g, c01.g, c11.g), blend(c00.b, c10.b, c01.b, c11.b)};
 }
 
-SPANLIGHT_PIXEL_INLINE Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
-  const Texel16 t = sample16_bilinear(tex, u, v, frac, wrap);
+// The same with the wrap mode known at run time only: out of line, since
+// inlined at every call site it makes the span loops spill more than the call costs.
+inline Texel16 sample16_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+  switch (wrap) {
+    case Wrap::repeat: return sample16_bilinear_as<Wrap::repeat>(tex, u, v, frac);
+    case Wrap::clamp: return sample16_bilinear_as<Wrap::clamp>(tex, u, v, frac);
+    case Wrap::border: break;
+  }
+  return sample16_bilinear_as<Wrap::border>(tex, u, v, frac);
+}
+
+SPANLIGHT_PIXEL_INLINE Rgb8 round_texel(const Texel16& t) {
   auto round8 = [](std::uint32_t c) { return static_cast<std::uint8_t>((c + 32768u) >> 16); };
   return {round8(t.r), round8(t.g), round8(t.b)};
 }
 
-// Texel channels times 2^16, unrounded when bilinear.
+// A repeat-wrapped bilinear texel rounded to 8 bits, out of line for the
+// modulate pass's run loop, and returned packed in one register (0x00BBGGRR)
+// rather than as a struct through memory.
+[[gnu::noinline]] inline std::uint32_t sample_bilinear_repeat_packed(const TextureData& tex, std::int32_t u, std::int32_t v, int frac) {
+  const Rgb8 c = round_texel(sample16_bilinear_as<Wrap::repeat>(tex, u, v, frac));
+  return std::uint32_t{c.r} | (std::uint32_t{c.g} << 8) | (std::uint32_t{c.b} << 16);
+}
+SPANLIGHT_PIXEL_INLINE Rgb8 unpack_rgb(std::uint32_t packed) {
+  return {static_cast<std::uint8_t>(packed), static_cast<std::uint8_t>(packed >> 8), static_cast<std::uint8_t>(packed >> 16)};
+}
+
+SPANLIGHT_PIXEL_INLINE Rgb8 sample_bilinear(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+  return round_texel(sample16_bilinear(tex, u, v, frac, wrap));
+}
+
+// A projector's image is always read with border; out of line like sample16_bilinear.
+inline Texel16 sample16_bilinear_border(const TextureData& tex, std::int32_t u, std::int32_t v, int frac) {
+  return sample16_bilinear_as<Wrap::border>(tex, u, v, frac);
+}
+
+// Texel channels times 2^16 (unrounded when bilinear), border wrap: a projector's image.
 template <bool Bilinear>
-SPANLIGHT_PIXEL_INLINE Texel16 sample16(const TextureData& tex, std::int32_t u, std::int32_t v, int frac, Wrap wrap) {
+SPANLIGHT_PIXEL_INLINE Texel16 sample16_border(const TextureData& tex, std::int32_t u, std::int32_t v, int frac) {
   if constexpr (Bilinear) {
-    if (tex.filter == Filter::bilinear) return sample16_bilinear(tex, u, v, frac, wrap);
+    if (tex.filter == Filter::bilinear) return sample16_bilinear_border(tex, u, v, frac);
   }
-  const Rgb8 t = sample_nearest(tex, u, v, frac, wrap);
+  const Rgb8 t = sample_nearest(tex, u, v, frac, Wrap::border);
   return {std::uint32_t{t.r} << 16, std::uint32_t{t.g} << 16, std::uint32_t{t.b} << 16};
 }
 

@@ -50,7 +50,7 @@ SPANLIGHT_PIXEL_INLINE Rgb8 projector_light(const LightContext& ctx, const Point
   // Image texel coordinates with 8 sub-texel bits: s in [0, 1] Q.28 times the size.
   const std::int32_t x = static_cast<std::int32_t>(fixedpoint::mul_s32(v.s[j], ctx.image->width) >> (proj_frac_bits - 8));
   const std::int32_t y = static_cast<std::int32_t>(fixedpoint::mul_s32(v.t[j], ctx.image->height) >> (proj_frac_bits - 8));
-  const Texel16 texel = sample16<F::bilinear>(*ctx.image, x, y, 8, Wrap::border);
+  const Texel16 texel = sample16_border<F::bilinear>(*ctx.image, x, y, 8);
   // colour (Q8.8) * texel (8.16, unrounded) * shadow (Q.8): rounded once, to 8-bit levels.
   auto channel = [&](std::uint16_t colour, std::uint32_t t) {
     const std::uint64_t product = fixedpoint::mul_u32(colour * shadow, t);  // < 2^16 * 2^9 * 2^24

@@ -12,9 +12,12 @@
 #pragma once
 
 #include <cstdint>
+#include <concepts>
 #include <type_traits>
 
+#include "spanlight/features.hpp"
 #include "spanlight/perspective.hpp"
+#include "spanlight/pixel_inline.hpp"
 
 namespace spanlight {
 
@@ -37,6 +40,44 @@ struct SpanControl {
   int tolerance_log2;                     // 0: never shorten a segment
   int uv_frac_bits;                       // of the object being drawn
   const std::uint16_t* projector_texels;  // larger side of each projector's image
+};
+
+// The pixels between two events of a walk: the first one's values and what
+// each further pixel adds. A kernel with a run() walks them itself, with its
+// per-object choices made once per run instead of at every pixel.
+template <int P>
+struct PixelRun {
+  PointValues<P> first;  // z is taken from z_acc
+  std::int32_t du, dv;
+  std::int32_t ds[P > 0 ? P : 1], dt[P > 0 ? P : 1], dr[P > 0 ? P : 1];
+  std::int64_t z_acc, dzdx;  // depth, Q1.30 with 32 more fraction bits
+};
+
+// body(k, values) for pixels k = 0 .. count - 1 of a run (count >= 1), with
+// the adds the walk would do; returns z_acc one pixel past the run.
+template <int P, typename Body>
+SPANLIGHT_PIXEL_INLINE std::int64_t for_each_run_pixel(const PixelRun<P>& run, std::int32_t count, Body&& body) {
+  PointValues<P> v = run.first;
+  std::int64_t z = run.z_acc;
+  for (std::int32_t k = 0;;) {
+    v.z = static_cast<std::int32_t>(z >> 32);
+    body(k, v);
+    z += run.dzdx;
+    if (++k == count) return z;
+    v.u += run.du;
+    v.v += run.dv;
+    for (int j = 0; j < P; ++j) {
+      v.s[j] += run.ds[j];
+      v.t[j] += run.dt[j];
+      v.r[j] += run.dr[j];
+    }
+  }
+}
+
+// A walk's pixel function that walks whole runs itself (geometry.hpp's RowPixels for a kernel with run()).
+template <typename Fn, int P>
+concept RunsPixels = requires(Fn& f, const PixelRun<P>& r) {
+  { f.run(std::int32_t{0}, std::int32_t{1}, r) } -> std::same_as<std::int64_t>;
 };
 
 // Linear stepping between two points deviates from the perspective-correct
@@ -218,64 +259,62 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
     for_each_projector<PS>(j0, j1, [&](int j) { projector[j].start(t, a, control, j, c0, c1); });
 
   const bool z_exact = t.depth_per_pixel;
-  const std::int64_t dzdx = t.dzdx;
   std::int64_t z_acc = DepthStepper::start(t, c0);
-  PointValues<P> values{};
-  std::int32_t uv_step[2] = {0, 0};
+  PixelRun<P> run{};  // groups the walk does not step keep zero steps
+  run.dzdx = t.dzdx;
   std::int32_t uv_event = 0;
-  std::int32_t proj_step[PS][3] = {};
   std::int32_t proj_event[PS] = {};
 
   std::int32_t column = c0;
   for (;;) {
-    // Load the groups into locals; the run ends at the first event.
+    // Load the groups into the run; it ends at the first event.
     std::int32_t run_end = c1 + 1;
     if constexpr (UV) {
       uv_event = uv.next_event(column);
       if (uv_event < run_end) run_end = uv_event;
-      values.u = uv.value[0];
-      values.v = uv.value[1];
-      uv_step[0] = uv.step[0];
-      uv_step[1] = uv.step[1];
+      run.first.u = uv.value[0];
+      run.first.v = uv.value[1];
+      run.du = uv.step[0];
+      run.dv = uv.step[1];
     }
     if constexpr (Projectors) {
       for_each_projector<PS>(j0, j1, [&](int j) {
         const GroupStepper<P, R>& g = projector[j];
         proj_event[j] = g.next_event(column);
         if (proj_event[j] < run_end) run_end = proj_event[j];
-        values.s[j] = g.value[0];
-        values.t[j] = g.value[1];
-        values.r[j] = g.value[2];
-        values.front[j] = g.front;
-        for (int k = 0; k < 3; ++k) proj_step[j][k] = g.step[k];
+        run.first.s[j] = g.value[0];
+        run.first.t[j] = g.value[1];
+        run.first.r[j] = g.value[2];
+        run.first.front[j] = g.front;
+        run.ds[j] = g.step[0];
+        run.dt[j] = g.step[1];
+        run.dr[j] = g.step[2];
       });
     }
-    for (;;) {  // the pixels of the run: adds only
-      values.z = z_exact ? DepthStepper::exact(t, column) : static_cast<std::int32_t>(z_acc >> 32);
-      pixel(column, values);
-      ++column;
-      z_acc += dzdx;
-      if (column == run_end) break;
-      if constexpr (UV) {
-        values.u += uv_step[0];
-        values.v += uv_step[1];
-      }
-      if constexpr (Projectors) {
-        for_each_projector<PS>(j0, j1, [&](int j) {
-          values.s[j] += proj_step[j][0];
-          values.t[j] += proj_step[j][1];
-          values.r[j] += proj_step[j][2];
-        });
+    const std::int32_t count = run_end - column;
+    run.z_acc = z_acc;
+    bool done = false;
+    if constexpr (RunsPixels<std::remove_reference_t<PixelFn>, P>) {
+      if (!z_exact) {
+        z_acc = pixel.run(column, count, run);
+        done = true;
       }
     }
+    if (!done) {
+      z_acc = for_each_run_pixel(run, count, [&](std::int32_t k, PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE {
+        if (z_exact) v.z = DepthStepper::exact(t, column + k);
+        pixel(column + k, v);
+      });
+    }
+    column = run_end;
     if (column > c1) return;
-    // Each group either has its event here or takes one more step.
+    // Each group either has its event here or takes the run's steps.
     if constexpr (UV) {
       if (column == uv_event) {
         uv.arrive(t, a, control, column, c1);
       } else {
-        uv.value[0] = values.u + uv_step[0];
-        uv.value[1] = values.v + uv_step[1];
+        uv.value[0] = run.first.u + count * run.du;
+        uv.value[1] = run.first.v + count * run.dv;
       }
     }
     if constexpr (Projectors) {
@@ -284,9 +323,9 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
         if (column == proj_event[j]) {
           g.arrive(t, a, control, column, c1);
         } else {
-          g.value[0] = values.s[j] + proj_step[j][0];
-          g.value[1] = values.t[j] + proj_step[j][1];
-          g.value[2] = values.r[j] + proj_step[j][2];
+          g.value[0] = run.first.s[j] + count * run.ds[j];
+          g.value[1] = run.first.t[j] + count * run.dt[j];
+          g.value[2] = run.first.r[j] + count * run.dr[j];
         }
       });
     }

@@ -1,6 +1,7 @@
 # spanlight_add_test(NAME name SOURCES a.cpp ... LIBS lib ...)
 # Builds a Catch2 test executable and its ASan+UBSan twin (name_asan), and
-# registers both with CTest, one ctest entry per Catch2 test case.
+# registers both with CTest, one ctest entry per Catch2 test case, plus a check
+# that no test case name holds a ';' (cmake/CheckTestNames.cmake).
 include(Catch)
 
 function(spanlight_add_test)
@@ -9,6 +10,12 @@ function(spanlight_add_test)
   target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} Catch2::Catch2WithMain)
   spanlight_warnings(${T_NAME})
   catch_discover_tests(${T_NAME} TEST_PREFIX "${T_NAME}: " PROPERTIES LABELS host)
+  # A ';' in a test case name would leave its ctest entry running nothing.
+  # The twin has the same sources, so the plain executable is checked alone.
+  add_test(NAME "${T_NAME}: no test case name holds a semicolon"
+    COMMAND ${CMAKE_COMMAND} -DTEST_EXECUTABLE=$<TARGET_FILE:${T_NAME}>
+            -P ${CMAKE_CURRENT_FUNCTION_LIST_DIR}/CheckTestNames.cmake)
+  set_tests_properties("${T_NAME}: no test case name holds a semicolon" PROPERTIES LABELS host)
 
   # The sanitizer twin: same sources; libraries listed in ASAN_LIBS (the
   # *_asan builds of our own libraries) replace LIBS so all of our code is instrumented.

@@ -147,7 +147,7 @@ TEST_CASE("a bias of 1 or more lights everything: the same picture as without sh
   }
 }
 
-TEST_CASE("bias 0: shadows still fall where they should; self-shadowing is the documented trade", "[extremes][colour][shadow]") {
+TEST_CASE("bias 0: shadows still fall where they should - self-shadowing is the documented trade", "[extremes][colour][shadow]") {
   // With bias 0 a surface compares its own r/q with the depth the map stored
   // for it: equal in real arithmetic, so either side of the compare in
   // practice. The map keeps the top 24 bits of the depth by truncation

@@ -81,7 +81,7 @@ TEST_CASE("a max-error target, the default target, and an impossible one", "[ana
   CHECK(none.why_none.find("PSNR >= 80") != std::string::npos);
 }
 
-TEST_CASE("a knob config survives writing and reading; bad ones are refused with the field", "[analyze]") {
+TEST_CASE("a knob config survives writing and reading - bad ones are refused with the field", "[analyze]") {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "spanlight_knob_config_test";
   std::filesystem::create_directories(dir);
   analyze::KnobConfig config;

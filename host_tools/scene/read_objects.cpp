@@ -19,7 +19,8 @@ Mesh read_geometry(const JsonField& object) {
       }
     }
     const JsonField mesh = object.required("mesh");
-    return load_obj_mesh(resolve_against_scene(object.file(), mesh.string()), mesh.path());
+    const auto obj_file = resolve_against_scene(object.file(), mesh.string());
+    return load_asset(object.file(), [&] { return load_obj_mesh(obj_file, mesh.path()); });
   }
   if (!object.has("positions")) object.fail_with("expected a mesh or inline positions and triangles, got neither");
   return read_inline_mesh(object);

@@ -34,7 +34,7 @@ Texture read_texture(const std::string& name, const JsonField& texture) {
   if (const auto wrap = texture.optional("wrap")) {
     loaded.wrap = wrap->choice<Wrap>({{"repeat", Wrap::repeat}, {"clamp", Wrap::clamp}, {"border", Wrap::border}});
   }
-  loaded.image = load_image(loaded.path, image.path());
+  loaded.image = load_asset(texture.file(), [&] { return load_image(loaded.path, image.path()); });
   check_repeat_sizes(texture, loaded);
   return loaded;
 }

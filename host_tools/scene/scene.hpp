@@ -91,18 +91,21 @@ struct Scene {
   std::vector<Projector> projectors;
 };
 
-// Thrown by load_scene for any bad input. what() reads "FILE: FIELD: EXPECTED".
+// Thrown by load_scene for any bad input. what() reads "FILE: FIELD: EXPECTED", or, when the
+// fault is in a file the field names (an OBJ mesh, an image), "FILE: FIELD: ASSET: EXPECTED":
+// FILE is always the scene file, so a message says which scene to fix even when assets are shared.
 class SceneError : public std::runtime_error {
  public:
-  SceneError(std::string file, std::string field, std::string expected)
-      : std::runtime_error(file + ": " + field + ": " + expected),
-        file_(std::move(file)), field_(std::move(field)), expected_(std::move(expected)) {}
+  SceneError(std::string file, std::string field, std::string expected, std::string asset = {})
+      : std::runtime_error(file + ": " + field + ": " + (asset.empty() ? "" : asset + ": ") + expected),
+        file_(std::move(file)), field_(std::move(field)), expected_(std::move(expected)), asset_(std::move(asset)) {}
   const std::string& file() const { return file_; }
   const std::string& field() const { return field_; }
   const std::string& expected() const { return expected_; }
+  const std::string& asset() const { return asset_; }  // empty: the fault is in the scene file itself
 
  private:
-  std::string file_, field_, expected_;
+  std::string file_, field_, expected_, asset_;
 };
 
 // Parses and validates a scene file; loads its meshes and images. Throws SceneError.

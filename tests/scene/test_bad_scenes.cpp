@@ -18,7 +18,7 @@ namespace {
 struct BadScene {
   const char* file;        // under tests/scene/bad/
   const char* field;       // SceneError::field(), exactly
-  const char* named_file;  // what what() must name: the scene itself, or the asset at fault
+  const char* named_file;  // what what() must name: the scene itself, or the asset at fault (and the scene)
 };
 
 constexpr const char* itself = nullptr;
@@ -89,6 +89,7 @@ const std::vector<BadScene> bad_scenes = {
   {"projector_image_unknown.json",         "projectors[0].image",             itself},
   // files the scene names
   {"mesh_file_missing.json",               "objects[0].mesh",                 "no_such_mesh.obj"},
+  {"mesh_is_directory.json",               "objects[0].mesh",                 "assets"},
   {"image_file_missing.json",              "textures.checker.image",          "no_such_image.png"},
   {"image_corrupt.json",                   "textures.checker.image",          "corrupt.png"},
   {"image_too_wide.json",                  "textures.checker.image",          "wide_4097x1.png"},
@@ -138,6 +139,15 @@ TEST_CASE("every malformed scene is refused with its file and field", "[scene][b
         CHECK_THAT(error.what(), Catch::Contains(named_file));
         CHECK_THAT(error.what(), Catch::Contains(bad.field));
         CHECK_THAT(error.expected(), Catch::StartsWith("expected "));
+        // The scene is named first even when the fault is in an asset: FILE: FIELD: [ASSET: ]EXPECTED.
+        CHECK(error.file() == file.string());
+        if (bad.named_file) {
+          CHECK_THAT(error.asset(), Catch::Contains(bad.named_file));
+        } else {
+          CHECK(error.asset().empty());
+        }
+        const std::string asset_part = error.asset().empty() ? "" : error.asset() + ": ";
+        CHECK(std::string(error.what()) == error.file() + ": " + error.field() + ": " + asset_part + error.expected());
       }
     }
   }

@@ -150,6 +150,25 @@ inline double depth_lsb(double w_min) {
   return vertex + 2.0 * 3.5 + 1.0 + 1.75 * 0x1p-29 * 0x1p30 + 0x1p12 * 0x1p-32 + 0.5;
 }
 
+// A subdivision point inside a span whose two ends are exact points and fill it
+// (perspective.hpp, RowInterpolation: q > 0 at both ends and no value clamped):
+// f~ = f_a~ + (f_b~ - f_a~) gamma~ with gamma~ from the ends' divisors. Against the truth
+// f = f_a + (f_b - f_a) gamma:
+//   f~ - f = (f_a~ - f_a)(1 - gamma~) + (f_b~ - f_b) gamma~ + (f_b - f_a)(gamma~ - gamma) + floor,
+// so |f~ - f| <= max(E_a, E_b)(1 + 2 eps_R) + (|f_b~ - f_a~| + E_a + E_b) eps_gamma + 1 unit
+// (gamma~ may pass 1 by eps_R without a Newton step). eps_gamma = |gamma~ - gamma|: the ends'
+// divisors off by the relative d_a, d_b (the pipeline's own error and RowInterpolation::init's
+// shift below 2^31) move gamma = b E_b / (a E_a + b E_b) by at most
+// gamma (1 - gamma)(d_a + d_b) / (1 - max d) <= (d_a + d_b) / (4 (1 - max d)); num and den cut to
+// 32 bits (2^-31 relative each), the reciprocal (eps_R) and the product's floor (2^-30) add
+// gamma (eps_R + 2^-30)(1 + eps_R) + 2^-30.
+inline double row_interpolated(double end_a, double end_b, double delta, double d_a, double d_b, double eps_reciprocal,
+                               double unit) {
+  const double eps_gamma = (d_a + d_b) / (4.0 * (1.0 - std::max(d_a, d_b))) +
+                           (eps_reciprocal + 0x1p-30) * (1.0 + eps_reciprocal) + 0x1p-30;
+  return std::max(end_a, end_b) * (1.0 + 2.0 * eps_reciprocal) + (delta + end_a + end_b) * eps_gamma + unit;
+}
+
 // Between exact points (span.hpp). A segment's values are the linear interpolation of its two
 // exact end values (each within E of the truth), plus at most one unit of the value's format per
 // step (step_of()'s floor; 2^span_log2 steps at most). The true curve v = (a + b x) / (c + d x) is

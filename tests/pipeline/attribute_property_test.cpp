@@ -165,6 +165,7 @@ struct ExactBounds {
   double weights_sum_low;  // the budget's premise: far above its sum of c_i (attribute_error_budget.hpp)
   double uv, uv_rho;
   double projector[projectors], projector_rho[projectors];
+  double uv_divisor, projector_divisor[projectors];  // the divisors' relative error against the truth
 };
 
 // A relative error c against the truth, as one against the fixed value: c / (1 - c).
@@ -177,6 +178,7 @@ ExactBounds exact_bounds(const Reference& ref, const ReferencePixel& p, double e
   b.weights_sum_low = w.sum_low;
   b.uv = std::max(budget::uv_exact(ref.u, p.u, w, ref.uv_frac_bits), budget::uv_exact(ref.v, p.v, w, ref.uv_frac_bits));
   b.uv_rho = against_fixed(w.divisor_relative);
+  b.uv_divisor = w.divisor_relative;
   for (int j = 0; j < projectors; ++j) {
     budget::ProjectorPoint point{};
     for (int k = 0; k < 3; ++k) {
@@ -193,6 +195,7 @@ ExactBounds exact_bounds(const Reference& ref, const ReferencePixel& p, double e
     // The projector's divisor is q~ times the weights' sum: the relative errors compound.
     const double c = (1.0 + budget::q_error(point, w) / p.q[j]) * (1.0 + w.divisor_relative) - 1.0;
     b.projector_rho[j] = against_fixed(c);
+    b.projector_divisor[j] = c;
   }
   return b;
 }
@@ -223,6 +226,54 @@ struct Tally {
   long long triangles = 0, refused = 0, coverage_mismatches = 0, behind = 0, wrong_side = 0, skipped_rows = 0;
   double weights_sum_low = INFINITY;
 };
+
+// The pipeline fills a span's inside from its two exact ends (RowInterpolation) when q > 0 at
+// both and no value is clamped; then every subdivision point inside is held to
+// budget::row_interpolated(), not to its own exact bound. One triangle: a row is one span, its
+// first and last pixels the ends.
+void bound_row_interpolation(const Reference& ref, const std::vector<std::pair<std::int32_t, spanlight::PointValues<P>>>& fixed,
+                             std::vector<ExactBounds>& bounds, std::size_t begin, std::size_t end, double eps_reciprocal) {
+  if (end - begin < 3) return;  // no pixel inside
+  const std::size_t a = begin, b = end - 1;
+  const spanlight::PointValues<P>& fa = fixed[a].second;
+  const spanlight::PointValues<P>& fb = fixed[b].second;
+  const ExactBounds ea = bounds[a], eb = bounds[b];
+  {
+    // RowInterpolation::init shifts the uv divisors (< 3 * 2^30) by one bit at most: 2 / S more.
+    const double d_a = ea.uv_divisor + 2.0 / ea.weights_sum_low, d_b = eb.uv_divisor + 2.0 / eb.weights_sum_low;
+    const double uv_unit = std::ldexp(1.0, -ref.uv_frac_bits);
+    const double delta = std::max(std::abs(fb.u - fa.u), std::abs(fb.v - fa.v)) * uv_unit;
+    const double inside = budget::row_interpolated(ea.uv, eb.uv, delta, d_a, d_b, eps_reciprocal, uv_unit);
+    const double rho = std::max(ea.uv_rho, eb.uv_rho) + against_fixed(std::max(2.0 / ea.weights_sum_low, 2.0 / eb.weights_sum_low));
+    for (std::size_t i = a + 1; i < b; ++i) {
+      bounds[i].uv = inside;
+      bounds[i].uv_rho = rho;
+    }
+  }
+  for (int j = 0; j < projectors; ++j) {
+    bool fills = fa.front[j] && fb.front[j] && ea.projector[j] >= 0.0 && eb.projector[j] >= 0.0;
+    for (const spanlight::PointValues<P>* f : {&fa, &fb}) {
+      for (const std::int32_t x : {f->s[j], f->t[j], f->r[j]}) fills = fills && std::abs(x) < spanlight::proj_limit;
+    }
+    if (!fills) continue;  // the inside is evaluated exactly, pixel by pixel: its own bounds hold
+    // init brings the larger divisor into [2^30, 2^31): the smaller loses up to 2^-30 D_max / D_min,
+    // D the fixed divisors (the true ones within the relative d_a, d_b).
+    const double da_true = ref.pixels[a].q[j] * ref.pixels[a].divisor, db_true = ref.pixels[b].q[j] * ref.pixels[b].divisor;
+    const double spread = std::max(da_true, db_true) / std::min(da_true, db_true) *
+                          (1.0 + std::max(ea.projector_divisor[j], eb.projector_divisor[j])) /
+                          (1.0 - std::max(ea.projector_divisor[j], eb.projector_divisor[j]));
+    const double shift = 0x1p-30 * spread;
+    const double d_a = ea.projector_divisor[j] + shift, d_b = eb.projector_divisor[j] + shift;
+    const double delta = std::max(std::abs(fb.s[j] - fa.s[j]), std::abs(fb.t[j] - fa.t[j])) / q28 * ref.texels[j];
+    const double inside = budget::row_interpolated(ea.projector[j], eb.projector[j], delta, d_a, d_b, eps_reciprocal,
+                                                   ref.texels[j] / q28);
+    const double rho = std::max(ea.projector_rho[j], eb.projector_rho[j]) + against_fixed(shift);
+    for (std::size_t i = a + 1; i < b; ++i) {
+      bounds[i].projector[j] = inside;
+      bounds[i].projector_rho[j] = rho;
+    }
+  }
+}
 
 // The row's largest exact bound, divisor error and value range for one group (uv: -1).
 struct RowGroup {
@@ -302,6 +353,7 @@ void check_triangle(const spanlight::PreparedScene& scene, const Setting& settin
     const std::int32_t row = ref.pixels[begin].index / scene.width;
     std::size_t end = begin;
     while (end < ref.pixels.size() && ref.pixels[end].index / scene.width == row) ++end;
+    bound_row_interpolation(ref, fixed, bounds, begin, end, eps_reciprocal);
     RowGroup groups[1 + projectors];
     for (int g = -1; g < projectors; ++g) groups[g + 1] = row_group(ref, bounds, begin, end, g);
     for (int g = 0; g <= projectors; ++g) tally.skipped_rows += !exact_everywhere && !groups[g].bounded;

@@ -6,6 +6,7 @@ namespace spanlight::prepare {
 namespace {
 
 using Function = fixedpoint::Reciprocal (*)(std::uint32_t);
+using NormalisedFunction = std::uint32_t (*)(std::uint32_t);
 
 template <int B, int S>
 fixedpoint::Reciprocal reciprocal_of(std::uint32_t d) {
@@ -18,12 +19,21 @@ constexpr Function choices[] = {
     reciprocal_of<8, 1>,  reciprocal_of<8, 2>,  reciprocal_of<10, 0>, reciprocal_of<10, 1>,
     reciprocal_of<10, 2>, reciprocal_of<12, 0>, reciprocal_of<12, 1>, reciprocal_of<12, 2>,
 };
+constexpr NormalisedFunction normalised_choices[] = {
+    fixedpoint::reciprocal_normalised<6, 0>,  fixedpoint::reciprocal_normalised<6, 1>,
+    fixedpoint::reciprocal_normalised<6, 2>,  fixedpoint::reciprocal_normalised<8, 0>,
+    fixedpoint::reciprocal_normalised<8, 1>,  fixedpoint::reciprocal_normalised<8, 2>,
+    fixedpoint::reciprocal_normalised<10, 0>, fixedpoint::reciprocal_normalised<10, 1>,
+    fixedpoint::reciprocal_normalised<10, 2>, fixedpoint::reciprocal_normalised<12, 0>,
+    fixedpoint::reciprocal_normalised<12, 1>, fixedpoint::reciprocal_normalised<12, 2>,
+};
 
 thread_local int current_choice = 4;  // 8-bit table, one Newton step: the default knobs
 
 }  // namespace
 
 fixedpoint::Reciprocal RuntimeReciprocal::of(std::uint32_t d) { return choices[current_choice](d); }
+std::uint32_t RuntimeReciprocal::of_normalised(std::uint32_t m) { return normalised_choices[current_choice](m); }
 
 ReciprocalChoice::ReciprocalChoice(int table_bits, int newton_steps) : previous_(current_choice) {
   if (table_bits != 6 && table_bits != 8 && table_bits != 10 && table_bits != 12)

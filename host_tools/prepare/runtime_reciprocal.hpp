@@ -12,6 +12,7 @@ namespace spanlight::prepare {
 
 struct RuntimeReciprocal {
   static fixedpoint::Reciprocal of(std::uint32_t d);
+  static std::uint32_t of_normalised(std::uint32_t m);  // m in [2^31, 2^32)
 };
 
 // Selects the table and steps RuntimeReciprocal uses on this thread while it lives.

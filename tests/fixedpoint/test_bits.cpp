@@ -90,3 +90,27 @@ TEST_CASE("32x32 -> 64 products from 16-bit halves equal the native product", "[
   }
   STATIC_REQUIRE(fixedpoint::mul_s32_halves(-65536, 65537) == -65536LL * 65537);  // constexpr too
 }
+
+TEST_CASE("64-bit shifts by less than 32 from 32-bit operations equal the native shifts", "[bits][shift]") {
+  std::mt19937_64 random(20261201);
+  for (int i = 0; i < random_cases; ++i) {
+    const std::uint64_t x = random() >> (random() % 64);  // every magnitude
+    const int s = static_cast<int>(random() % 32);
+    if (fixedpoint::low_word_shifted_right(x, s) != static_cast<std::uint32_t>(x >> s)) FAIL("x >> s at x = " << x << ", s = " << s);
+    const auto w = static_cast<std::uint32_t>(x);
+    if (fixedpoint::widened_shifted_left(w, s) != std::uint64_t{w} << s) FAIL("x << s at x = " << w << ", s = " << s);
+    if (x != 0) {
+      const int n = fixedpoint::clz64(x);
+      if (fixedpoint::high_word_shifted_left(x, n) != static_cast<std::uint32_t>((x << n) >> 32))
+        FAIL("top word at x = " << x);
+    }
+    const int any = static_cast<int>(random() % 64);
+    if (fixedpoint::high_word_shifted_left(x, any) != static_cast<std::uint32_t>((x << any) >> 32))
+      FAIL("high word of x << " << any << " at x = " << x);
+  }
+  for (const int s : {0, 1, 31}) {  // the ends of the range, where a naive hi << (32 - s) would be undefined
+    REQUIRE(fixedpoint::low_word_shifted_right(0xFFFFFFFFFFFFFFFFull, s) == static_cast<std::uint32_t>(0xFFFFFFFFFFFFFFFFull >> s));
+    REQUIRE(fixedpoint::widened_shifted_left(0xFFFFFFFFu, s) == std::uint64_t{0xFFFFFFFFu} << s);
+  }
+  STATIC_REQUIRE(fixedpoint::high_word_shifted_left(1, 63) == 0x80000000u);
+}

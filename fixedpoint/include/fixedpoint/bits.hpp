@@ -79,6 +79,25 @@ constexpr std::int64_t mul_shift_wide(std::int64_t a, std::int32_t b, int s) {
                                    static_cast<std::uint64_t>(low_part >> s));
 }
 
+// 64-bit shifts by an amount known to be below 32, from 32-bit operations: on
+// Cortex-M a 64-bit shift by a run-time amount is about a dozen instructions
+// (a libgcc call on ARMv6-M) because it must also handle amounts of 32 and more.
+// The low word of x >> s, 0 <= s < 32.
+constexpr std::uint32_t low_word_shifted_right(std::uint64_t x, int s) {
+  const auto lo = static_cast<std::uint32_t>(x), hi = static_cast<std::uint32_t>(x >> 32);
+  return (lo >> s) | ((hi << 1) << (31 - s));  // (hi << 1) << (31 - s): hi << (32 - s) without UB at s = 0
+}
+// x << s as a 64-bit value, 0 <= s < 32.
+constexpr std::uint64_t widened_shifted_left(std::uint32_t x, int s) {
+  return (std::uint64_t{(x >> 1) >> (31 - s)} << 32) | (x << s);
+}
+
+// The high word of x << n, 0 <= n < 64 (with n = clz64(x): x's top 32 significant bits).
+constexpr std::uint32_t high_word_shifted_left(std::uint64_t x, int n) {
+  const auto lo = static_cast<std::uint32_t>(x), hi = static_cast<std::uint32_t>(x >> 32);
+  return n >= 32 ? lo << (n - 32) : (hi << n) | ((lo >> 1) >> (31 - n));
+}
+
 // Clamp an int64 into int32 range: saturation, never wrap.
 constexpr std::int32_t saturate32(std::int64_t x) {
   return x > INT32_MAX ? INT32_MAX : (x < INT32_MIN ? INT32_MIN : static_cast<std::int32_t>(x));

@@ -31,6 +31,10 @@ struct TableReciprocal {
   static constexpr fixedpoint::Reciprocal of(std::uint32_t d) {
     return fixedpoint::reciprocal<TableBits, NewtonSteps>(d);
   }
+  // 2^62 / m for m already in [2^31, 2^32): of(m) without the CLZ (a libgcc call on ARMv6-M).
+  static constexpr std::uint32_t of_normalised(std::uint32_t m) {
+    return fixedpoint::reciprocal_normalised<TableBits, NewtonSteps>(m);
+  }
 };
 
 template <int MaxProjectors, bool Shadows, bool Pcf, bool Bilinear, PixelFormat Format, typename Reciprocal>
@@ -51,7 +55,7 @@ using HostFeatures = HostFeaturesWith<Format, TableReciprocal<TableBits, NewtonS
 
 struct Precision {
   std::uint8_t span_log2 = 4;    // a reciprocal every 2^span_log2 pixels; 0 = every pixel
-  std::uint8_t span_tolerance_log2 = 3;  // shorten segments that would drift > 1/8 texel; 0: never
+  std::uint8_t span_tolerance_log2 = 3;  // shorten segments that would drift > 1/8 texel; 0: never; at most 10
   std::uint8_t depth_bits = 24;  // 16 or 24: bits kept in the depth buffer and shadow maps
   bool fused = false;            // one pass per pixel instead of the paper's multipass
 };

@@ -125,10 +125,10 @@ struct ModulateKernel {
     }
     if constexpr (F::bilinear) {
       const bool white = (current->color[0] & current->color[1] & current->color[2]) == 255;
-      if (texture->filter == Filter::bilinear && texture->wrap == Wrap::repeat && white) {
-        const TextureData& tex = *texture;
-        const int frac = current->uv_frac_bits;
-        return each([&](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return unpack_rgb(sample_bilinear_repeat_packed(tex, v.u, v.v, frac)); });
+      if (texture->filter == Filter::bilinear && texture->wrap == Wrap::repeat && white &&
+          RepeatTexture::fits(current->uv_frac_bits)) {
+        const RepeatTexture tex(*texture, current->uv_frac_bits);
+        return each([&](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return unpack_rgb(sample_bilinear_packed(tex, v.u, v.v)); });
       }
     }
     return each([&](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return surface_colour<F>(*current, texture, v); });

@@ -142,26 +142,23 @@ struct RowInterpolation {
   // The point at column x in [a, b]; its denominator is (b - x) E_a + (x - a) E_b,
   // the divisor up to the row's constant (linear_enough() compares ratios only).
   template <typename R>
-  constexpr GroupPoint at(std::int32_t x) const {
+  constexpr void at(std::int32_t x, GroupPoint& out) const {
     const auto before = static_cast<std::uint32_t>(x - a), after = static_cast<std::uint32_t>(length) - before;
     const std::uint64_t num = fixedpoint::mul_u32(before, e_b);  // < 2^12 * 2^31
     const std::uint64_t den = num + fixedpoint::mul_u32(after, e_a);
-    GroupPoint out;
     out.denominator = static_cast<std::int64_t>(den);
     out.front = true;
     if (after == 0 || before == 0) {  // the ends themselves, exactly
       for (int k = 0; k < 3; ++k) out.value[k] = after == 0 ? f_a[k] + df[k] : f_a[k];
-      return out;
+      return;
     }
-    // Both cut to the 32 bits below den's leading one (den < 2^43, so n >= 21),
-    // and for a divisor in [2^31, 2^32) R returns shift 62: gamma is the high word.
+    // Both cut to the 32 bits below den's leading one (den < 2^43, so n >= 21);
+    // 1/den_top is then 2^62 / den_top and gamma the product's high word.
     const int n = fixedpoint::clz64(den);
-    const auto den_top = static_cast<std::uint32_t>((den << n) >> 32);
-    const auto num_top = static_cast<std::uint32_t>((num << n) >> 32);
-    const fixedpoint::Reciprocal rcp = R::of(den_top);
-    const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(num_top, rcp.mantissa) >> 32);  // Q0.30
+    const std::uint32_t den_top = fixedpoint::high_word_shifted_left(den, n);
+    const std::uint32_t num_top = fixedpoint::high_word_shifted_left(num, n);
+    const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(num_top, R::of_normalised(den_top)) >> 32);  // Q0.30
     for (int k = 0; k < 3; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
-    return out;
   }
 };
 

@@ -15,7 +15,8 @@ template <typename F, typename DepthT, typename Observer = NoObserver>
 RenderStatus render_frame(const PreparedScene& scene, const FrameTarget<F::format, DepthT>& target,
                           const Precision& precision) {
   using Color = ColorTraits<F::format>;
-  if (precision.span_log2 > 6 || (precision.depth_bits != 16 && precision.depth_bits != 24)) {
+  if (precision.span_log2 > 6 || precision.span_tolerance_log2 > 10 ||
+      (precision.depth_bits != 16 && precision.depth_bits != 24)) {
     return RenderStatus::bad_precision;
   }
   if (precision.depth_bits > static_cast<int>(8 * sizeof(DepthT))) return RenderStatus::bad_precision;

@@ -106,12 +106,45 @@ SPANLIGHT_PIXEL_INLINE Rgb8 round_texel(const Texel16& t) {
   return {round8(t.r), round8(t.g), round8(t.b)};
 }
 
-// A repeat-wrapped bilinear texel rounded to 8 bits, out of line for the
-// modulate pass's run loop, and returned packed in one register (0x00BBGGRR)
-// rather than as a struct through memory.
-[[gnu::noinline]] inline std::uint32_t sample_bilinear_repeat_packed(const TextureData& tex, std::int32_t u, std::int32_t v, int frac) {
-  const Rgb8 c = round_texel(sample16_bilinear_as<Wrap::repeat>(tex, u, v, frac));
-  return std::uint32_t{c.r} | (std::uint32_t{c.g} << 8) | (std::uint32_t{c.b} << 16);
+// A repeat-wrapped texture with what its bilinear fetch needs worked out once
+// per run (the modulate pass's fast path): masks, the row stride, where row 0
+// (the image's last) starts, and at least 8 sub-texel bits, so the weight needs no branch.
+struct RepeatTexture {
+  const std::uint8_t* row0;  // texel row 0 from the bottom
+  std::uint32_t stride;      // bytes per row
+  std::uint32_t x_mask, y_mask;
+  int frac, weight_shift;    // frac >= 8; weight_shift = frac - 8
+  std::int32_t half;         // half a texel: texel centres sit at half-integers
+  static constexpr bool fits(int uv_frac_bits) { return uv_frac_bits >= 8; }
+  RepeatTexture(const TextureData& tex, int uv_frac_bits)
+      : row0(tex.rgb + static_cast<std::uint32_t>(tex.height - 1) * tex.width * 3u),
+        stride(tex.width * 3u),
+        x_mask(tex.width - 1u),
+        y_mask(tex.height - 1u),
+        frac(uv_frac_bits),
+        weight_shift(uv_frac_bits - 8),
+        half(std::int32_t{1} << (uv_frac_bits - 1)) {}
+};
+
+// sample16_bilinear_as<Wrap::repeat> rounded to 8 bits, to the bit, out of line for the run
+// loop and returned packed in one register (0x00BBGGRR) rather than as a struct through memory.
+[[gnu::noinline]] inline std::uint32_t sample_bilinear_packed(const RepeatTexture& tex, std::int32_t u, std::int32_t v) {
+  const std::int32_t x = u - tex.half, y = v - tex.half;
+  const std::int32_t x0 = x >> tex.frac, y0 = y >> tex.frac;
+  const std::uint32_t fx = (static_cast<std::uint32_t>(x) >> tex.weight_shift) & 255u;
+  const std::uint32_t fy = (static_cast<std::uint32_t>(y) >> tex.weight_shift) & 255u;
+  const std::uint32_t i0 = (static_cast<std::uint32_t>(x0) & tex.x_mask) * 3u;
+  const std::uint32_t i1 = (static_cast<std::uint32_t>(x0 + 1) & tex.x_mask) * 3u;
+  const std::uint8_t* row0 = tex.row0 - (static_cast<std::uint32_t>(y0) & tex.y_mask) * tex.stride;
+  const std::uint8_t* row1 = tex.row0 - (static_cast<std::uint32_t>(y0 + 1) & tex.y_mask) * tex.stride;
+  const std::uint32_t w00 = (256 - fx) * (256 - fy), w10 = fx * (256 - fy), w01 = (256 - fx) * fy, w11 = fx * fy;
+  std::uint32_t packed = 0;
+#pragma GCC unroll 3
+  for (std::uint32_t c = 0; c < 3; ++c) {
+    const std::uint32_t blend = row0[i0 + c] * w00 + row0[i1 + c] * w10 + row1[i0 + c] * w01 + row1[i1 + c] * w11;
+    packed |= ((blend + 32768u) >> 16) << (8 * c);
+  }
+  return packed;
 }
 SPANLIGHT_PIXEL_INLINE Rgb8 unpack_rgb(std::uint32_t packed) {
   return {static_cast<std::uint8_t>(packed), static_cast<std::uint8_t>(packed >> 8), static_cast<std::uint8_t>(packed >> 16)};

@@ -88,15 +88,17 @@ concept RunsPixels = requires(Fn& f, const PixelRun<P>& r) {
 // as long is worth trying next. delta_texels8 has 8 fraction bits.
 constexpr int linear_headroom(std::uint64_t delta_texels8, std::int64_t d0, std::int64_t d1, int tolerance_log2) {
   if (tolerance_log2 == 0 || d0 <= 0 || d1 <= 0) return 2;  // sign changes are handled per pixel
-  const std::uint64_t larger = static_cast<std::uint64_t>(d0 > d1 ? d0 : d1);
-  const int excess = fixedpoint::bit_length(larger) - 31;  // bring d below 2^31
+  const auto u0 = static_cast<std::uint64_t>(d0), u1 = static_cast<std::uint64_t>(d1);
+  // Bring both below 2^31 by one shift; it is < 32 because divisors stay below 2^62 (perspective.hpp).
+  const int excess = fixedpoint::bit_length(u0 > u1 ? u0 : u1) - 31;
   const int s = excess > 0 ? excess : 0;
-  const std::uint64_t a = static_cast<std::uint64_t>(d0) >> s, b = static_cast<std::uint64_t>(d1) >> s;
-  const std::uint64_t delta_d = a > b ? a - b : b - a;
-  const std::uint64_t smaller = a < b ? a : b;
-  if (delta_texels8 > 0xFFFFFFFFu) delta_texels8 = 0xFFFFFFFFu;
-  // |dt| * |dd| <= min * 2^(10 - tol): left < 2^63, right < 2^41.
-  const std::uint64_t drift = delta_texels8 * delta_d, allowed = (smaller << 10) >> tolerance_log2;
+  const std::uint32_t a = fixedpoint::low_word_shifted_right(u0, s), b = fixedpoint::low_word_shifted_right(u1, s);
+  const std::uint32_t delta_d = a > b ? a - b : b - a;
+  const std::uint32_t smaller = a < b ? a : b;
+  const std::uint32_t texels = delta_texels8 > 0xFFFFFFFFu ? 0xFFFFFFFFu : static_cast<std::uint32_t>(delta_texels8);
+  // |dt| * |dd| <= min * 2^(10 - tol) (tol <= 10, render_frame checks): left < 2^63, right < 2^41.
+  const std::uint64_t drift = fixedpoint::mul_u32(texels, delta_d);
+  const std::uint64_t allowed = fixedpoint::widened_shifted_left(smaller, 10 - tolerance_log2);
   return drift > allowed ? 0 : (drift <= allowed >> 2 ? 2 : 1);
 }
 
@@ -139,27 +141,27 @@ struct GroupStepper {
   std::int32_t value[3];
   bool front;
   std::int32_t step[3];
-  std::int32_t segment_end;  // column of `end`
+  std::int32_t segment_end;  // column of the segment's end point
   bool per_pixel;            // q changes sign inside this segment
   std::int32_t trial_length; // first length tried for the next segment
-  GroupPoint end;
 
   constexpr void start(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c, int g,
                        std::int32_t c0, std::int32_t c1) {
     group = g;
     trial_length = 1 << c.span_log2;
-    GroupPoint first = exact_at(t, a, c0);
+    here = 0;
     interpolated = false;
+    exact_at(t, a, c0, points[0]);
     if (c0 < c1) {
-      const GroupPoint last = exact_at(t, a, c1);
-      if (interpolable(first, last)) {  // the usual case: the rest of the row's points are cheap
-        row.init(c0, c1, first, last);
+      exact_at(t, a, c1, points[1]);
+      if (interpolable(points[0], points[1])) {  // the usual case: the rest of the row's points are cheap
+        row.init(c0, c1, points[0], points[1]);
         interpolated = true;
-        first = row.at<R>(c0);  // the same values; the denominator on the row's scale
+        row.at<R>(c0, points[0]);  // the same values; the denominator on the row's scale
       }
     }
-    take(first);
-    plan_or_finish(t, a, c, first, c0, c1);
+    take(points[0]);
+    plan_or_finish(t, a, c, c0, c1);
   }
 
   // The next column at which this group needs out-of-line work, seen from `column`.
@@ -170,22 +172,30 @@ struct GroupStepper {
   [[gnu::noinline]] constexpr void arrive(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c,
                                           std::int32_t column, std::int32_t c1) {
     if (column == segment_end) {
-      take(end);
-      plan_or_finish(t, a, c, end, column, c1);
+      here ^= 1;  // the end is where the next segment starts: no copy
+      take(points[here]);
+      plan_or_finish(t, a, c, column, c1);
     } else {
-      take(point_at(t, a, column));
+      GroupPoint& scratch = points[here];  // the segment's start is not needed again
+      point_at(t, a, column, scratch);
+      take(scratch);
     }
   }
 
  private:
+  // The exact points at the current segment's start (points[here]) and end
+  // (points[here ^ 1]), kept in place: on ARMv6-M a struct copy is a call to memcpy.
+  GroupPoint points[2];
+  int here;
   RowInterpolation row;  // between the span's ends, when `interpolated`
   bool interpolated;
 
-  constexpr GroupPoint exact_at(const TriangleSetup& t, const TriangleAttributes<P>& a, std::int32_t column) const {
-    return evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column), t.edge[2].value_at(column));
+  constexpr void exact_at(const TriangleSetup& t, const TriangleAttributes<P>& a, std::int32_t column, GroupPoint& out) const {
+    out = evaluate_group<P, R>(t, a, group, t.edge[1].value_at(column), t.edge[2].value_at(column));
   }
-  constexpr GroupPoint point_at(const TriangleSetup& t, const TriangleAttributes<P>& a, std::int32_t column) const {
-    return interpolated ? row.at<R>(column) : exact_at(t, a, column);
+  constexpr void point_at(const TriangleSetup& t, const TriangleAttributes<P>& a, std::int32_t column, GroupPoint& out) const {
+    if (interpolated) row.at<R>(column, out);
+    else exact_at(t, a, column, out);
   }
 
   constexpr void take(const GroupPoint& p) {
@@ -194,9 +204,9 @@ struct GroupStepper {
   }
 
   constexpr void plan_or_finish(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c,
-                                const GroupPoint from, std::int32_t column, std::int32_t c1) {
+                                std::int32_t column, std::int32_t c1) {
     if (column < c1) {
-      plan_segment(t, a, c, from, column, c1);
+      plan_segment(t, a, c, column, c1);
     } else {  // the span's last pixel: no event before the walk ends
       segment_end = c1 + 1;
       per_pixel = false;
@@ -204,15 +214,17 @@ struct GroupStepper {
   }
 
   constexpr void plan_segment(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanControl& c,
-                              const GroupPoint from, std::int32_t column, std::int32_t c1) {  // a copy: `end` is rewritten below
+                              std::int32_t column, std::int32_t c1) {
     // Start from the last segment's length, doubled when that one drifted
     // less than a quarter of the tolerance: the curvature that set it changes
     // slowly along a row, so most first trials are the segment.
+    const GroupPoint& from = points[here];
+    GroupPoint& end = points[here ^ 1];
     const std::int32_t span_len = 1 << c.span_log2;
     std::int32_t len = c1 - column < trial_length ? c1 - column : trial_length;
     int headroom = 2;
     for (;;) {  // halve until linear stepping is close enough
-      end = point_at(t, a, column + len);
+      point_at(t, a, column + len, end);
       if (len == 1) break;
       if (interpolated || !saturation_breaks_linearity(from, end)) {
         headroom = linear_headroom(texel_delta8(from, end, group, c), from.denominator, end.denominator, c.tolerance_log2);

@@ -91,6 +91,26 @@ TEST_CASE("32x32 -> 64 products from 16-bit halves equal the native product", "[
   STATIC_REQUIRE(fixedpoint::mul_s32_halves(-65536, 65537) == -65536LL * 65537);  // constexpr too
 }
 
+TEST_CASE("a 32x16 product from two 16x16 products equals the native product", "[bits][multiply]") {
+  // The ARMv6-M formula, whatever this host's has_long_multiply says.
+  auto two_products = [](std::uint32_t a, std::uint32_t b) {
+    return (std::uint64_t{(a >> 16) * b} << 16) + (a & 0xFFFFu) * b;
+  };
+  const std::uint32_t wide[] = {0u, 1u, 0xFFFFu, 0x10000u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu};
+  const std::uint32_t narrow[] = {0u, 1u, 2u, 0x8000u, 0xFFFEu, 0xFFFFu};
+  for (const std::uint32_t a : wide) {
+    for (const std::uint32_t b : narrow) {
+      REQUIRE(two_products(a, b) == std::uint64_t{a} * b);
+      REQUIRE(fixedpoint::mul_u32_u16(a, b) == std::uint64_t{a} * b);
+    }
+  }
+  std::mt19937_64 random(20261201);
+  for (int i = 0; i < random_cases; ++i) {
+    const auto a = static_cast<std::uint32_t>(random()), b = static_cast<std::uint32_t>(random() & 0xFFFFu);
+    if (two_products(a, b) != std::uint64_t{a} * b) FAIL("mismatch at a = " << a << ", b = " << b);
+  }
+}
+
 TEST_CASE("64-bit shifts by less than 32 from 32-bit operations equal the native shifts", "[bits][shift]") {
   std::mt19937_64 random(20261201);
   for (int i = 0; i < random_cases; ++i) {

@@ -64,6 +64,12 @@ inline constexpr bool has_long_multiply = true;
   else return mul_s32_u32_halves(a, b);
 }
 
+// a * b for b < 2^16: two 16x16 products on ARMv6-M instead of four.
+[[gnu::always_inline]] constexpr std::uint64_t mul_u32_u16(std::uint32_t a, std::uint32_t b) {
+  if constexpr (has_long_multiply) return std::uint64_t{a} * b;
+  else return (std::uint64_t{(a >> 16) * b} << 16) + (a & 0xFFFFu) * b;  // each product < 2^32
+}
+
 // floor(a * b / 2^s) for any int64 a, |b| < 2^31 and 0 <= s <= 32, without
 // the 96-bit product overflowing: split a into hi*2^32 + lo (lo unsigned).
 // floor((H*2^32 + L) / 2^s) = H*2^(32-s) + floor(L / 2^s) exactly, because

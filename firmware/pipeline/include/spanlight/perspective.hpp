@@ -144,8 +144,8 @@ struct RowInterpolation {
   template <typename R>
   constexpr void at(std::int32_t x, GroupPoint& out) const {
     const auto before = static_cast<std::uint32_t>(x - a), after = static_cast<std::uint32_t>(length) - before;
-    const std::uint64_t num = fixedpoint::mul_u32(before, e_b);  // < 2^12 * 2^31
-    const std::uint64_t den = num + fixedpoint::mul_u32(after, e_a);
+    const std::uint64_t num = fixedpoint::mul_u32_u16(e_b, before);  // < 2^12 * 2^31 (spans < 2^13 px)
+    const std::uint64_t den = num + fixedpoint::mul_u32_u16(e_a, after);
     out.denominator = static_cast<std::int64_t>(den);
     out.front = true;
     if (after == 0 || before == 0) {  // the ends themselves, exactly

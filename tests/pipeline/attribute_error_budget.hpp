@@ -173,13 +173,13 @@ inline double row_interpolated(double end_a, double end_b, double delta, double 
 // exact end values (each within E of the truth), plus at most one unit of the value's format per
 // step (step_of()'s floor; 2^span_log2 steps at most). The true curve v = (a + b x) / (c + d x) is
 // within |dv| |dD| / (4 min D) of its chord (D the screen-linear divisor; exact, not first order).
-// linear_enough() admits a segment when n |dD~| <= 2^(8 - tol) 4 min D~, n = floor(256 |dv~|) on
+// linear_headroom() admits a segment when n |dD~| <= 2^(8 - tol) 4 min D~, n = floor(256 |dv~|) on
 // the fixed values and divisors D~; with D~ within a relative rho of the truth (rho <= 1/3),
 // |dv| <= (n + 1) / 256 + 4E, and the gap is also never more than |dv|. Both cases give
 //   gap <= 2^-tol (1 + 3 rho) + 2^-8 + 4E + rho |dv|,
 // so a stepped value is within 5E + 2^-tol (1 + 3 rho) + 2^-8 + rho |dv| + 2^span_log2 units.
 // E, rho and |dv| are taken as their largest over the pixels of the row (the segment's ends lie
-// there); rho also holds linear_enough()'s shift of D below 2^31 (< 2^-30 D_max / D_min).
+// there); rho also holds linear_headroom()'s shift of D below 2^31 (< 2^-30 D_max / D_min).
 inline double stepped(double row_exact, double row_rho, double row_range, int tolerance_log2, int span_log2,
                       double unit) {
   return 5.0 * row_exact + std::ldexp(1.0, -tolerance_log2) * (1.0 + 3.0 * row_rho) + 0x1p-8 + row_rho * row_range +

@@ -159,7 +159,7 @@ struct Setting {
   int span_log2, tolerance_log2, table_bits, newton_steps;
 };
 
-// One pixel's bounds at an exact point, and how far off linear_enough()'s divisors may be
+// One pixel's bounds at an exact point, and how far off linear_headroom()'s divisors may be
 // (relative to their own value); projector < 0 where q is within its error of 0.
 struct ExactBounds {
   double weights_sum_low;  // the budget's premise: far above its sum of c_i (attribute_error_budget.hpp)

@@ -57,11 +57,11 @@ std::vector<Sample> walk(const spanlight::PreparedScene& scene, int span_log2) {
 }
 
 // The bound, in texels of the image the values index:
-//   2^-3   what linear_enough() allows (span_tolerance_log2 = 3); for
+//   2^-3   what linear_headroom() allows (span_tolerance_log2 = 3); for
 //          v = (a + b x) / (c + d x) the gap between the curve and its chord
 //          is at most |dv| |dD| / (4 min D) exactly (D the screen-linear
 //          divisor), so this is a true bound, not a first-order estimate;
-//   2^-8   linear_enough() sees the texel distance truncated to 1/256 texel;
+//   2^-8   linear_headroom() sees the texel distance truncated to 1/256 texel;
 //   2^-8   the exact evaluations at both ends and at the pixel itself, each
 //          with two reciprocals good to 2^-29 relative and Q0.30 weights;
 //          step_of() truncates each step by < 2^-28, 64 steps at most.

@@ -140,7 +140,7 @@ struct RowInterpolation {
   }
 
   // The point at column x in [a, b]; its denominator is (b - x) E_a + (x - a) E_b,
-  // the divisor up to the row's constant (linear_enough() compares ratios only).
+  // the divisor up to the row's constant (linear_headroom() compares ratios only).
   template <typename R>
   constexpr void at(std::int32_t x, GroupPoint& out) const {
     const auto before = static_cast<std::uint32_t>(x - a), after = static_cast<std::uint32_t>(length) - before;

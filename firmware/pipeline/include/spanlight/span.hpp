@@ -1,10 +1,13 @@
 // Stage 4b, spans: walk a row's covered columns. Each group (surface uv, each
-// projector) is evaluated exactly (perspective.hpp) at subdivision points at
-// most 2^span_log2 pixels apart and stepped linearly in between (Quake's
-// subdivision). A segment is halved while linear stepping would drift more
-// than 2^-tolerance_log2 texel from the exact value, and evaluated at every
-// pixel where a projector's q changes sign (q/w is linear on screen, so q > 0
-// at both ends means q > 0 all along).
+// projector) is evaluated exactly (perspective.hpp, evaluate_group) at the
+// span's two ends, and at subdivision points at most 2^span_log2 pixels apart
+// in between: there from the 1-D perspective interpolation of the ends
+// (RowInterpolation, one reciprocal) when q > 0 at both and no value is
+// clamped, else by evaluate_group. Between subdivision points values step
+// linearly (Quake's subdivision). A segment is halved while linear stepping
+// would drift more than 2^-tolerance_log2 texel from the exact value, and
+// evaluated at every pixel where a projector's q changes sign (q/w is linear
+// on screen, so q > 0 at both ends means q > 0 all along).
 //
 // Each group keeps its own schedule, and depth steps by its own gradient, so a
 // pixel's values do not depend on which other groups a pass interpolates: the

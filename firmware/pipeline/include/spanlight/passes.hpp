@@ -116,22 +116,9 @@ struct ModulateKernel {
   // The object's choices (texture or colour, filter, wrap) made once per run.
   template <int P>
   std::int64_t run(std::int32_t i, std::int32_t count, const PixelRun<P>& r) const {
-    auto each = [&](auto&& surface) SPANLIGHT_LAMBDA_INLINE {
+    return with_run_surface<F, P>(*current, texture, [&](auto&& surface) SPANLIGHT_LAMBDA_INLINE {
       return for_each_run_pixel(r, count, [&](std::int32_t k, const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { modulate_with(i + k, v, surface); });
-    };
-    if (texture == nullptr) {
-      const Rgb8 colour{current->color[0], current->color[1], current->color[2]};
-      return each([colour](const PointValues<P>&) SPANLIGHT_LAMBDA_INLINE { return colour; });
-    }
-    if constexpr (F::bilinear) {
-      const bool white = (current->color[0] & current->color[1] & current->color[2]) == 255;
-      if (texture->filter == Filter::bilinear && texture->wrap == Wrap::repeat && white &&
-          RepeatTexture::fits(current->uv_frac_bits)) {
-        const RepeatTexture tex(*texture, current->uv_frac_bits);
-        return each([&](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return unpack_rgb(sample_bilinear_packed(tex, v.u, v.v)); });
-      }
-    }
-    return each([&](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return surface_colour<F>(*current, texture, v); });
+    });
   }
 
  private:
@@ -163,6 +150,18 @@ struct FusedKernel {
   }
   template <typename V>
   SPANLIGHT_PIXEL_INLINE void pixel(std::int32_t i, const V& v) const {
+    fused_with(i, v, [&](const V& at) SPANLIGHT_LAMBDA_INLINE { return surface_colour<F>(*current, texture, at); });
+  }
+  template <int P>
+  std::int64_t run(std::int32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    return with_run_surface<F, P>(*current, texture, [&](auto&& surface) SPANLIGHT_LAMBDA_INLINE {
+      return for_each_run_pixel(r, count, [&](std::int32_t k, const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { fused_with(i + k, v, surface); });
+    });
+  }
+
+ private:
+  template <typename V, typename Surface>
+  SPANLIGHT_PIXEL_INLINE void fused_with(std::int32_t i, const V& v, Surface&& surface) const {
     const std::uint32_t d = depth.store(v.z);
     if (d >= target.depth[i]) return;
     target.depth[i] = static_cast<DepthT>(d);
@@ -172,11 +171,7 @@ struct FusedKernel {
       const Rgb8 add = projector_light<F, DepthT>(lights[j], v, j, depth.bits);
       if ((add.r | add.g | add.b) != 0) c = Color::quantize(add_light(c, add));
     });
-    Color::store(target.color + i * Color::per_pixel, modulate(c, surface_colour<F>(*current, texture, v)));
-  }
-  template <int P>
-  std::int64_t run(std::int32_t i, std::int32_t count, const PixelRun<P>& r) const {
-    return for_each_run_pixel(r, count, [&](std::int32_t k, const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { pixel(i + k, v); });
+    Color::store(target.color + i * Color::per_pixel, modulate(c, surface(v)));
   }
 };
 

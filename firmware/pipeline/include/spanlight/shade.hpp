@@ -78,4 +78,25 @@ SPANLIGHT_PIXEL_INLINE Rgb8 surface_colour(const ObjectData& object, const Textu
   return {mul255(object.color[0], t.r), mul255(object.color[1], t.g), mul255(object.color[2], t.b)};
 }
 
+// Calls fn(surface), surface(values) giving the object's surface colour at a
+// pixel, with the best form chosen once for a run of pixels: the colour itself
+// when untextured, the repeat-wrapped bilinear fast path (white objects), or
+// surface_colour(). Every form gives surface_colour()'s bytes.
+template <typename F, int P, typename Fn>
+SPANLIGHT_PIXEL_INLINE std::int64_t with_run_surface(const ObjectData& object, const TextureData* texture, Fn&& fn) {
+  if (texture == nullptr) {
+    const Rgb8 colour{object.color[0], object.color[1], object.color[2]};
+    return fn([colour](const PointValues<P>&) SPANLIGHT_LAMBDA_INLINE { return colour; });
+  }
+  if constexpr (F::bilinear) {
+    const bool white = (object.color[0] & object.color[1] & object.color[2]) == 255;
+    if (texture->filter == Filter::bilinear && texture->wrap == Wrap::repeat && white &&
+        RepeatTexture::fits(object.uv_frac_bits)) {
+      const RepeatTexture tex(*texture, object.uv_frac_bits);
+      return fn([&tex](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return unpack_rgb(sample_bilinear_packed(tex, v.u, v.v)); });
+    }
+  }
+  return fn([&](const PointValues<P>& v) SPANLIGHT_LAMBDA_INLINE { return surface_colour<F>(object, texture, v); });
+}
+
 }  // namespace spanlight

@@ -3,7 +3,7 @@
 # two anchor scenes, with the default grid, counted on Cortex-M7 and Cortex-M0+ in QEMU.
 #   docs/sweep/regenerate.sh [BUILD_DIR]      (default: build; needs bin/spanlight, the
 #                                              firmware trees and the QEMU plugin built)
-# Takes about 8 minutes in all on an idle 2-core machine. Run from anywhere; scene paths in the output are relative
+# Takes about 5 minutes in all on an idle 2-core machine. Run from anywhere; scene paths in the output are relative
 # to the source tree.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -15,7 +15,7 @@ cd "$root"
   git status --short -- firmware fixedpoint 2>/dev/null | sed 's/^/local change: /'
 } >docs/sweep/SOURCE.txt
 # slide_projector, the scene of the target figures, with every configuration counted on QEMU
-# (about 5 minutes); the others with QEMU's cost-relevant grid (1-2 minutes each).
+# (about 2 minutes); the others with QEMU's cost-relevant grid (under a minute each).
 "$build/bin/spanlight" sweep scenes/slide_projector.json --out docs/sweep/slide_projector --qemu-grid full --pictures 3 \
   --firmware-dir "$build"
 for scene in spot_shadow three_projectors horizon; do

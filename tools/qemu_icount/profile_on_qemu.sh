@@ -81,6 +81,7 @@ awk -v top="$top" -v total_file="$work/count.txt" '
     f = frame; sub(/^ *\(inlined by\) /, "", f); sub(/^0x[0-9a-f]+: /, "", f); sub(/ at [^ ]+$/, "", f)
     while (gsub(/<[^<>]*>/, "", f)) {}
     while (gsub(/\([^()]*\)/, "", f)) {}
+    sub(/ const$/, "", f)                   # a const member function: its name is the word before
     sub(/^.* /, "", f)
     return f
   }

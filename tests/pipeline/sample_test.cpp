@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <random>
 #include <vector>
 
 #include "spanlight/sample.hpp"
@@ -149,4 +150,36 @@ TEST_CASE("sample<> uses the texture's own filter, and nearest alone when biline
         std::array<int, 3>{238, 17, 80});
   CHECK(rgb(spanlight::sample<false>(tex(Filter::bilinear, Wrap::clamp), at(2.0), at(0.5), 8, Wrap::clamp)) ==
         std::array<int, 3>{238, 17, 80});
+}
+
+TEST_CASE("the run loop's repeat-wrapped bilinear fetch equals the general one to the bit", "[sample]") {
+  // sample_bilinear_packed (the modulate and fused passes' fast path) restates
+  // sample16_bilinear_as<Wrap::repeat> with per-run constants; the passes rely on
+  // it giving the same bytes. Random coordinates over many wraps, every size
+  // combination of 1..64 and all the sub-texel precisions it accepts.
+  std::mt19937 random(0x5a3e1e);
+  for (const int width : {1, 2, 4, 16, 64}) {
+    for (const int height : {1, 4, 32}) {
+      std::vector<std::uint8_t> rgb(static_cast<std::size_t>(width * height * 3));
+      for (std::uint8_t& c : rgb) c = static_cast<std::uint8_t>(random());
+      const TextureData tex{rgb.data(), static_cast<std::uint16_t>(width), static_cast<std::uint16_t>(height),
+                            Filter::bilinear, Wrap::repeat};
+      for (const int frac : {8, 12, 16, 20}) {
+        REQUIRE(spanlight::RepeatTexture::fits(frac));
+        const spanlight::RepeatTexture fast(tex, frac);
+        const std::int32_t range = 1 << (frac + 8);  // +-256 texels: many wraps both ways
+        std::uniform_int_distribution<std::int32_t> coordinate(-range, range);
+        for (int n = 0; n < 2000; ++n) {
+          const std::int32_t u = coordinate(random), v = coordinate(random);
+          const Rgb8 expected = spanlight::round_texel(spanlight::sample16_bilinear_as<Wrap::repeat>(tex, u, v, frac));
+          const Rgb8 got = spanlight::unpack_rgb(spanlight::sample_bilinear_packed(fast, u, v));
+          INFO("size " << width << "x" << height << ", frac " << frac << ", u " << u << ", v " << v);
+          REQUIRE(int{got.r} == int{expected.r});
+          REQUIRE(int{got.g} == int{expected.g});
+          REQUIRE(int{got.b} == int{expected.b});
+        }
+      }
+    }
+  }
+  CHECK_FALSE(spanlight::RepeatTexture::fits(7));  // fewer sub-texel bits take the general path
 }

@@ -67,18 +67,13 @@ SPANLIGHT_PIXEL_INLINE bool claim_pixel(std::uint8_t* mask, std::int32_t i) {
 
 // Depth as stored: the top depth_bits of the Q1.30 window depth, cleared to all ones.
 constexpr std::uint32_t depth_clear(int depth_bits) { return (1u << depth_bits) - 1u; }
-constexpr std::uint32_t depth_store(std::int32_t z_q30, int depth_bits) {
-  const std::uint32_t z = static_cast<std::uint32_t>(z_q30 < 0 ? 0 : z_q30) >> (30 - depth_bits);
-  const std::uint32_t top = depth_clear(depth_bits) - 1u;  // never the clear value
-  return z > top ? top : z;
-}
 
-// depth_store() and depth_clear() with their constants worked out once per
-// pass instead of at every pixel (depth bits are a run-time knob).
+// The stored depth with its constants worked out once per pass instead of at
+// every pixel (depth bits are a run-time knob).
 struct DepthFormat {
   int bits;
   int shift;           // 30 - bits
-  std::uint32_t top;   // the largest value a surface stores
+  std::uint32_t top;   // the largest value a surface stores: never the clear value
   std::uint32_t clear;
   constexpr explicit DepthFormat(int depth_bits)
       : bits(depth_bits), shift(30 - depth_bits), top(depth_clear(depth_bits) - 1u), clear(depth_clear(depth_bits)) {}
@@ -87,5 +82,7 @@ struct DepthFormat {
     return z > top ? top : z;
   }
 };
+
+constexpr std::uint32_t depth_store(std::int32_t z_q30, int depth_bits) { return DepthFormat(depth_bits).store(z_q30); }
 
 }  // namespace spanlight

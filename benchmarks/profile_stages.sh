@@ -20,7 +20,7 @@ command -v valgrind >/dev/null || { echo "profile_stages: valgrind is not instal
 mkdir -p "$work"
 app=$work/render_${scene}_profile
 g++ -std=c++20 -O2 -g -DNDEBUG \
-  -I"$source_dir/firmware/pipeline/include" -I"$source_dir/fixedpoint/include" -I"$source_dir/hal/include" \
+  -I"$source_dir/pipeline/include" -I"$source_dir/fixedpoint/include" -I"$source_dir/hal/include" \
   -I"$source_dir/hal/common" -I"$baked" \
   "$source_dir/firmware/apps/render_baked/render_baked_main.cpp" "$baked/baked_scene.cpp" "$source_dir"/hal/host/*.cpp \
   -o "$app"

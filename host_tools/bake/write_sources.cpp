@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "bake/bake.hpp"
+#include "spanlight/scene_features.hpp"
 
 namespace spanlight::bake {
 namespace {
@@ -25,9 +26,23 @@ void write_matrix(std::ostream& out, const Mat4Block& m) {
   out << "}, " << m.frac_bits << "}";
 }
 
-const char* filter_name(Filter f) { return f == Filter::nearest ? "Filter::nearest" : "Filter::bilinear"; }
+const char* filter_name(Filter f) {
+  return f == Filter::nearest ? "Filter::nearest" : (f == Filter::bilinear ? "Filter::bilinear" : "Filter::trilinear");
+}
 const char* wrap_name(Wrap w) {
   return w == Wrap::repeat ? "Wrap::repeat" : (w == Wrap::clamp ? "Wrap::clamp" : "Wrap::border");
+}
+const char* boolean(bool b) { return b ? "true" : "false"; }
+
+void write_matrices(std::ostream& out, const char* name, const std::vector<Mat4Block>& mats) {
+  out << "const Mat4Block " << name << "[" << (mats.empty() ? 1 : mats.size()) << "] = {";
+  for (const Mat4Block& m : mats) {
+    out << "\n  ";
+    write_matrix(out, m);
+    out << ",";
+  }
+  if (mats.empty()) out << "{}";
+  out << "\n};\n";
 }
 
 void write_atomically(const std::filesystem::path& file, const std::string& text) {
@@ -46,34 +61,43 @@ void write_atomically(const std::filesystem::path& file, const std::string& text
 
 }  // namespace
 
-std::string baked_config_source(const prepare::PreparedStorage& prepared, const prepare::FixedOptions& options,
+std::string baked_config_source(const prepare::PreparedStorage& prepared, const Knobs& knobs,
                                 const std::string& scene_name) {
   const PreparedScene& s = prepared.scene;
-  const SceneFeatures f = features_of(s);
-  const bool rgb565 = options.format == PixelFormat::rgb565;
+  const Features f = features_of(s, knobs);
+  std::uint32_t shadow_texels = 0;
+  for (int j = 0; j < s.projector_count; ++j)
+    if (s.projectors[j].shadows) shadow_texels += std::uint32_t{s.projectors[j].map_size} * s.projectors[j].map_size;
   std::ostringstream out;
   out << "// Baked by `spanlight bake` from scene \"" << scene_name << "\". Do not edit: bake again.\n"
       << "// Only what the scene uses is switched on, so the rest is never compiled.\n"
       << "#pragma once\n\n#include <cstdint>\n\n#include \"spanlight/render.hpp\"\n\n"
       << "namespace baked {\n\n"
-      << "using Features = spanlight::Features<" << f.projectors << ", " << (f.shadows ? "true" : "false") << ", "
-      << (f.pcf ? "true" : "false") << ", " << (f.bilinear ? "true" : "false") << ", spanlight::PixelFormat::"
-      << (rgb565 ? "rgb565" : "rgb888") << ",\n    spanlight::TableReciprocal<" << options.table_bits << ", "
-      << options.newton_steps << ">>;\n"
-      << "using Depth = " << (options.precision.depth_bits <= 16 ? "std::uint16_t" : "std::uint32_t") << ";\n\n"
+      << "inline constexpr spanlight::Features features{.max_projectors = " << int(f.max_projectors)
+      << ", .shadows = " << boolean(f.shadows) << ", .pcf = " << boolean(f.pcf) << ",\n    .nearest = " << boolean(f.nearest)
+      << ", .bilinear = " << boolean(f.bilinear) << ", .clamped = " << boolean(f.clamped) << ", .tinted = " << boolean(f.tinted)
+      << ",\n    .format = spanlight::PixelFormat::" << (knobs.format == PixelFormat::rgb888 ? "rgb888" : (knobs.format == PixelFormat::rgb565 ? "rgb565" : "rgb565_be"))
+      << ", .fused = " << boolean(f.fused) << ", .multipass = " << boolean(f.multipass)
+      << ",\n    .table_bits = " << int(f.table_bits) << ", .newton = " << int(f.newton) << "};\n"
+      << "// As `spanlight render` takes them: --span " << knob_value(knobs, "span") << " --tolerance "
+      << knob_value(knobs, "tolerance") << " --table-bits " << knob_value(knobs, "table-bits") << " --newton "
+      << knob_value(knobs, "newton") << " --depth-bits " << knob_value(knobs, "depth-bits") << " --format "
+      << knob_value(knobs, "format") << " --passes " << knob_value(knobs, "passes") << "\n"
+      << "inline constexpr spanlight::Knobs knobs{" << int(knobs.span_log2) << ", " << int(knobs.tolerance_log2) << ", "
+      << int(knobs.table_bits) << ", " << int(knobs.newton) << ", " << int(knobs.depth_bits) << ", features.format, spanlight::Passes::"
+      << (knobs.passes == Passes::fused ? "fused" : "multipass") << "};\n"
+      << "using Depth = " << (knobs.depth_bits <= 16 ? "std::uint16_t" : "std::uint32_t") << ";\n\n"
       << "inline constexpr const char* scene_name = \"" << scene_name << "\";\n"
       << "inline constexpr std::uint16_t width = " << s.width << ";\n"
       << "inline constexpr std::uint16_t height = " << s.height << ";\n"
-      << "inline constexpr int projector_count = " << f.projectors << ";\n"
-      << "inline constexpr std::uint32_t shadow_map_texels = " << f.shadow_map_texels << ";  // all maps together\n"
-      << "inline constexpr spanlight::Precision precision{" << int(options.precision.span_log2) << ", "
-      << int(options.precision.span_tolerance_log2) << ", " << int(options.precision.depth_bits) << ", "
-      << (options.precision.fused ? "true" : "false") << "};\n"
+      << "inline constexpr int projector_count = " << int(s.projector_count) << ";\n"
+      << "inline constexpr std::uint32_t shadow_map_texels = " << shadow_texels << ";  // all maps together\n"
       << "// map_size of each projector, 0 where it casts no shadow.\n"
-      << "inline constexpr std::uint16_t shadow_map_size[" << (f.projectors ? f.projectors : 1) << "] = {";
+      << "inline constexpr std::uint16_t shadow_map_size[" << (s.projector_count ? s.projector_count : 1) << "] = {";
   for (int j = 0; j < s.projector_count; ++j) out << (s.projectors[j].shadows ? s.projectors[j].map_size : 0) << ", ";
   if (s.projector_count == 0) out << "0";
-  out << "};\n\nextern const spanlight::PreparedScene scene;\n\n}  // namespace baked\n";
+  out << "};\n\nextern const spanlight::PreparedScene scene;\n"
+      << "extern const spanlight::FrameMatrices matrices;  // the scene file's own pose\n\n}  // namespace baked\n";
   return out.str();
 }
 
@@ -82,15 +106,26 @@ std::string baked_scene_source(const prepare::PreparedStorage& prepared, const s
   std::ostringstream out;
   out << "// Baked by `spanlight bake` from scene \"" << scene_name << "\". Do not edit: bake again.\n"
       << "#include \"baked_config.hpp\"\n\nnamespace baked {\nnamespace {\n\nusing namespace spanlight;\n\n";
-  for (std::size_t t = 0; t < prepared.texels.size(); ++t)
-    write_array(out, "std::uint8_t", "texels_" + std::to_string(t), prepared.texels[t].data(), prepared.texels[t].size());
-  out << "\nconst TextureData textures[" << (s.projector_count + s.object_count > 0 && !prepared.textures.empty() ? prepared.textures.size() : 1) << "] = {\n";
+  for (std::size_t t = 0; t < prepared.texture_storage.size(); ++t) {
+    const prepare::PreparedTexture& storage = prepared.texture_storage[t];
+    out << "// texture " << t << ": " << prepared.texture_names[t] << "\n";
+    for (std::size_t l = 0; l < storage.framed.size(); ++l)
+      write_array(out, "std::uint32_t", "texels_" + std::to_string(t) + "_" + std::to_string(l), storage.framed[l].data(),
+                  storage.framed[l].size());
+    out << "const TextureLevel levels_" << t << "[" << storage.levels.size() << "] = {\n";
+    for (std::size_t l = 0; l < storage.levels.size(); ++l) {
+      const TextureLevel& level = storage.levels[l];
+      out << "  {texels_" << t << "_" << l << " + " << (level.texels - storage.framed[l].data()) << ", " << level.width
+          << ", " << level.height << ", " << level.stride << "},\n";
+    }
+    out << "};\n";
+  }
+  out << "\nconst TextureData textures[" << (prepared.textures.empty() ? 1 : prepared.textures.size()) << "] = {\n";
   for (std::size_t t = 0; t < prepared.textures.size(); ++t) {
     const TextureData& d = prepared.textures[t];
-    out << "  {texels_" << t << ", " << d.width << ", " << d.height << ", " << filter_name(d.filter) << ", "
-        << wrap_name(d.wrap) << "},\n";
+    out << "  {levels_" << t << ", " << int(d.level_count) << ", " << filter_name(d.filter) << ", " << wrap_name(d.wrap) << "},\n";
   }
-  if (prepared.textures.empty()) out << "  {nullptr, 0, 0, Filter::nearest, Wrap::border},\n";
+  if (prepared.textures.empty()) out << "  {nullptr, 0, Filter::nearest, Wrap::border},\n";
   out << "};\n\n";
 
   for (std::size_t o = 0; o < prepared.objects.size(); ++o) {
@@ -99,51 +134,45 @@ std::string baked_scene_source(const prepare::PreparedStorage& prepared, const s
     write_array(out, "std::int32_t", "positions_" + n, prepared.positions[o].data(), prepared.positions[o].size());
     write_array(out, "std::int32_t", "uvs_" + n, prepared.uvs[o].data(), prepared.uvs[o].size());
     write_array(out, "std::uint16_t", "indices_" + n, prepared.indices[o].data(), prepared.indices[o].size());
-    for (const char* kind : {"projector_from_object_", "light_clip_from_object_"}) {
-      const auto& mats = std::string(kind) == "projector_from_object_" ? prepared.projector_from_object[o]
-                                                                         : prepared.light_clip_from_object[o];
-      out << "const Mat4Block " << kind << n << "[" << (mats.empty() ? 1 : mats.size()) << "] = {";
-      for (const Mat4Block& m : mats) {
-        out << "\n  ";
-        write_matrix(out, m);
-        out << ",";
-      }
-      if (mats.empty()) out << "{}";
-      out << "\n};\n";
-    }
   }
   out << "\nconst ObjectData objects[" << (prepared.objects.empty() ? 1 : prepared.objects.size()) << "] = {\n";
   for (std::size_t o = 0; o < prepared.objects.size(); ++o) {
     const ObjectData& d = prepared.objects[o];
     const std::string n = std::to_string(o);
-    out << "  {positions_" << n << ", uvs_" << n << ", indices_" << n << ", " << d.triangle_count << ", " << d.texture
-        << ", " << int(d.uv_frac_bits) << ", " << (d.cull == Cull::back ? "Cull::back" : "Cull::none") << ", {"
-        << int(d.color[0]) << ", " << int(d.color[1]) << ", " << int(d.color[2]) << "}, ";
-    write_matrix(out, d.clip_from_object);
-    out << ", projector_from_object_" << n << ", light_clip_from_object_" << n << "},\n";
+    out << "  {positions_" << n << ", uvs_" << n << ", indices_" << n << ", " << d.vertex_count << ", " << d.triangle_count
+        << ", {{" << d.bounds.min[0] << ", " << d.bounds.min[1] << ", " << d.bounds.min[2] << "}, {" << d.bounds.max[0]
+        << ", " << d.bounds.max[1] << ", " << d.bounds.max[2] << "}}, " << d.texture << ", " << int(d.uv_frac_bits) << ", "
+        << (d.cull == Cull::back ? "Cull::back" : "Cull::none") << ", {" << int(d.color[0]) << ", " << int(d.color[1])
+        << ", " << int(d.color[2]) << "}, TexgenSpace::none},\n";
   }
   out << "};\n\nconst ProjectorData projectors[" << (s.projector_count ? s.projector_count : 1) << "] = {\n";
   for (int j = 0; j < s.projector_count; ++j) {
     const ProjectorData& p = s.projectors[j];
-    out << "  {" << p.texture << ", {" << p.color[0] << ", " << p.color[1] << ", " << p.color[2] << "}, "
-        << (p.shadows ? "true" : "false") << ", "
+    out << "  {" << p.texture << ", " << p.falloff << ", {" << p.color[0] << ", " << p.color[1] << ", " << p.color[2]
+        << "}, " << boolean(p.facing_only) << ", " << boolean(p.shadows) << ", "
         << (p.filter == ShadowFilter::pcf2x2 ? "ShadowFilter::pcf2x2" : "ShadowFilter::nearest") << ", " << p.map_size
         << ", " << p.bias << "},\n";
   }
   if (s.projector_count == 0) out << "  {},\n";
-  out << "};\n\n}  // namespace\n\n"
+  out << "};\n\n";
+  write_matrices(out, "clip_from_object", prepared.clip_from_object);
+  write_matrices(out, "projector_from_object", prepared.projector_from_object);
+  write_matrices(out, "light_clip_from_object", prepared.light_clip_from_object);
+  out << "\n}  // namespace\n\n"
       << "const PreparedScene scene{" << s.width << ", " << s.height << ", {" << int(s.ambient[0]) << ", "
-      << int(s.ambient[1]) << ", " << int(s.ambient[2]) << "}, textures, objects, " << s.object_count
-      << ", projectors, " << int(s.projector_count) << "};\n\n}  // namespace baked\n";
+      << int(s.ambient[1]) << ", " << int(s.ambient[2]) << "}, textures, " << int(s.texture_count) << ", objects, "
+      << s.object_count << ", projectors, " << int(s.projector_count) << ", " << s.max_vertex_count << "};\n\n"
+      << "const FrameMatrices matrices{clip_from_object, projector_from_object, light_clip_from_object};\n\n"
+      << "}  // namespace baked\n";
   return out.str();
 }
 
-void write_baked_scene(const prepare::PreparedStorage& prepared, const prepare::FixedOptions& options,
-                       const std::string& scene_name, const std::filesystem::path& out_dir) {
+void write_baked_scene(const prepare::PreparedStorage& prepared, const Knobs& knobs, const std::string& scene_name,
+                       const std::filesystem::path& out_dir) {
   std::error_code error;
   std::filesystem::create_directories(out_dir, error);
   if (error) throw std::runtime_error(out_dir.string() + ": cannot create: " + error.message());
-  write_atomically(out_dir / "baked_config.hpp", baked_config_source(prepared, options, scene_name));
+  write_atomically(out_dir / "baked_config.hpp", baked_config_source(prepared, knobs, scene_name));
   write_atomically(out_dir / "baked_scene.cpp", baked_scene_source(prepared, scene_name));
 }
 

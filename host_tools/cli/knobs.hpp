@@ -1,26 +1,17 @@
-// The pipeline's speed/accuracy knobs as command-line options, shared by
-// render, bake and the other commands that run the fixed pipeline.
+// The pipeline's knobs (spanlight/knobs.hpp) as command-line options, made
+// from the one knob table, for every command that runs the fixed pipeline.
 #pragma once
-
-#include <string>
 
 #include <CLI/CLI.hpp>
 
-#include "prepare/render_fixed.hpp"
+#include "spanlight/knobs.hpp"
 
 namespace spanlight::cli {
 
-struct KnobArgs {
-  int span = 16;
-  int tolerance_log2 = 3;
-  int table_bits = 8;
-  int newton = 1;
-  int depth_bits = 24;
-  std::string format = "rgb888";
-  bool fused = false;
-};
+// Adds `--name value` for every knob of knob_table, writing into `knobs` (defaults shown in --help).
+void add_knob_options(CLI::App& cmd, Knobs& knobs);
 
-void add_knob_options(CLI::App& cmd, KnobArgs& knobs);
-prepare::FixedOptions to_fixed_options(const KnobArgs& knobs);
+// The knob options' names as CLI11 knows them ("--span", ...), e.g. to exclude them together.
+std::vector<std::string> knob_option_names();
 
 }  // namespace spanlight::cli

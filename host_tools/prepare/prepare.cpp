@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace spanlight::prepare {
 namespace {
-
-constexpr double position_limit = 16384.0;  // Q15.16 with headroom: |coord| < 2^14
 
 std::int32_t to_q16(double value, const std::string& what) {
   if (!(std::fabs(value) < position_limit)) {
@@ -30,38 +30,104 @@ Wrap to_wrap(scene::Wrap w) {
   return Wrap::border;
 }
 
+// Where texel coordinate i (in [-1, size]) of the frame reads from, or -1 for black.
+int framed_index(int i, int size, Wrap wrap) {
+  if (i >= 0 && i < size) return i;
+  switch (wrap) {
+    case Wrap::repeat: return (i + size) % size;
+    case Wrap::clamp: return i < 0 ? 0 : size - 1;
+    case Wrap::border: return -1;
+  }
+  return -1;
+}
+
+Bounds bounds_of(const std::vector<std::int32_t>& xyz) {
+  Bounds b{{INT32_MAX, INT32_MAX, INT32_MAX}, {INT32_MIN, INT32_MIN, INT32_MIN}};
+  for (std::size_t i = 0; i < xyz.size(); ++i) {
+    const std::size_t c = i % 3;
+    b.min[c] = std::min(b.min[c], xyz[i]);
+    b.max[c] = std::max(b.max[c], xyz[i]);
+  }
+  if (xyz.empty()) b = Bounds{};
+  return b;
+}
+
 }  // namespace
+
+std::vector<std::uint32_t> framed_texels(const scene::Image& image, Wrap wrap) {
+  const int w = image.width, h = image.height;
+  std::vector<std::uint32_t> out(framed_texel_count(static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h)));
+  std::size_t k = 0;
+  for (int y = -texture_frame; y < h + texture_frame; ++y) {  // from the bottom row (t = 0) up
+    for (int x = -texture_frame; x < w + texture_frame; ++x, ++k) {
+      const int xi = framed_index(x, w, wrap), yi = framed_index(y, h, wrap);
+      if (xi < 0 || yi < 0) continue;  // border: black
+      const auto t = image.texel(xi, h - 1 - yi);  // the file's rows are top first
+      out[k] = (std::uint32_t{t[0]} << 16) | (std::uint32_t{t[1]} << 8) | t[2];
+    }
+  }
+  return out;
+}
 
 Mat4Block to_mat4_block(const glm::dmat4& m) {
   double col_major[16];
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) col_major[c * 4 + r] = m[c][r];
   const Mat4Block out = fixedpoint::mat4_block_from_doubles(col_major);
-  // Below 16 fraction bits an entry is >= 2^13 and clip coordinates could leave Q31.32.
-  if (out.frac_bits < 16) throw PrepareError("a transform has an entry beyond the supported 2^13");
+  if (out.frac_bits < min_matrix_frac_bits) throw PrepareError("a transform has an entry beyond the supported 2^13");
   return out;
 }
 
 int uv_frac_bits_for(double largest_texel_coordinate) {
   if (largest_texel_coordinate < 1.0) return 16;
   const int integer_bits = static_cast<int>(std::floor(std::log2(largest_texel_coordinate))) + 1;
-  return std::clamp(29 - integer_bits, 0, 16);
+  return std::clamp(29 - integer_bits, 8, 16);
 }
 
 std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
   auto out = std::make_unique<PreparedStorage>();
   const std::size_t projector_count = s.projectors.size();
 
-  out->texels.reserve(s.textures.size());
-  for (const scene::Texture& t : s.textures) {
-    out->texels.push_back(t.image.rgb);
-    out->textures.push_back(TextureData{out->texels.back().data(), static_cast<std::uint16_t>(t.image.width),
-                                        static_cast<std::uint16_t>(t.image.height), to_filter(t.filter), to_wrap(t.wrap)});
+  // Each (image, wrap) a pass reads gets its own TextureData: objects read a texture
+  // with its wrap, projectors with a black frame (border).
+  std::map<std::pair<int, Wrap>, std::int16_t> baked;
+  auto texture_for = [&](int index, Wrap wrap) -> std::int16_t {
+    const auto key = std::make_pair(index, wrap);
+    if (const auto found = baked.find(key); found != baked.end()) return found->second;
+    const scene::Texture& t = s.textures[static_cast<std::size_t>(index)];
+    PreparedTexture& storage = out->texture_storage.emplace_back();
+    storage.framed.push_back(framed_texels(t.image, wrap));
+    const auto id = static_cast<std::int16_t>(out->texture_storage.size() - 1);
+    baked.emplace(key, id);
+    out->texture_names.push_back(t.name + (wrap == to_wrap(t.wrap) ? "" : "_border"));
+    return id;
+  };
+  std::vector<std::pair<int, Wrap>> uses;  // in order of first use, so indices are stable
+  std::vector<std::int16_t> object_texture(s.objects.size(), -1), projector_texture(projector_count, -1);
+  for (std::size_t i = 0; i < s.objects.size(); ++i)
+    if (const int t = s.objects[i].texture; t >= 0) object_texture[i] = texture_for(t, to_wrap(s.textures[static_cast<std::size_t>(t)].wrap));
+  for (std::size_t j = 0; j < projector_count; ++j) projector_texture[j] = texture_for(s.projectors[j].image, Wrap::border);
+
+  // Level tables after all storage exists (their pointers must not move).
+  for (std::size_t i = 0; i < out->texture_storage.size(); ++i) {
+    PreparedTexture& storage = out->texture_storage[i];
+    int index = -1;
+    Wrap wrap = Wrap::repeat;
+    for (const auto& [key, id] : baked)
+      if (static_cast<std::size_t>(id) == i) std::tie(index, wrap) = key;
+    const scene::Texture& t = s.textures[static_cast<std::size_t>(index)];
+    const auto w = static_cast<std::uint16_t>(t.image.width), h = static_cast<std::uint16_t>(t.image.height);
+    const std::uint32_t stride = w + 2u * texture_frame;
+    storage.levels.push_back(TextureLevel{storage.framed[0].data() + stride * texture_frame + texture_frame, w, h,
+                                          static_cast<std::uint16_t>(stride)});
+    out->textures.push_back(TextureData{storage.levels.data(), 1, to_filter(t.filter), wrap});
   }
 
-  for (const scene::Projector& p : s.projectors) {
+  for (std::size_t j = 0; j < projector_count; ++j) {
+    const scene::Projector& p = s.projectors[j];
     ProjectorData d{};
-    d.texture = static_cast<std::int16_t>(p.image);
+    d.texture = projector_texture[j];
+    d.falloff = -1;
     for (int c = 0; c < 3; ++c) d.color[c] = to_q8_8(p.color[c]);
     d.shadows = p.shadows.has_value();
     if (p.shadows) {
@@ -77,25 +143,24 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
   out->positions.resize(n);
   out->uvs.resize(n);
   out->indices.resize(n);
-  out->projector_from_object.resize(n);
-  out->light_clip_from_object.resize(n);
+  std::uint16_t max_vertices = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const scene::Object& o = s.objects[i];
     const std::string where = s.file.string() + ": objects[" + std::to_string(i) + "]";
-    if (o.mesh.positions.size() > 65535) throw PrepareError(where + ": more than 65535 vertices");
+    if (o.mesh.positions.size() > vertex_limit) throw PrepareError(where + ": more than 65535 vertices");
 
     auto& pos = out->positions[i];
     for (const glm::dvec3& p : o.mesh.positions)
       for (int c = 0; c < 3; ++c) pos.push_back(to_q16(p[c], where + ".positions"));
 
-    int frac = 0;
+    int frac = 8;
     if (o.texture >= 0) {
       const scene::Image& img = s.textures[static_cast<std::size_t>(o.texture)].image;
       double largest = 0.0;
       for (const glm::dvec2& uv : o.mesh.uvs)
         largest = std::max({largest, std::fabs(uv.x * img.width), std::fabs(uv.y * img.height)});
-      if (!(largest < 536870912.0))  // 2^29: the pipeline's |u| bound (perspective.hpp)
-        throw PrepareError(where + ".uvs: texel coordinate " + std::to_string(largest) + " is beyond the supported 2^29");
+      if (!(largest < texel_coordinate_limit))
+        throw PrepareError(where + ".uvs: texel coordinate " + std::to_string(largest) + " is beyond the supported 2^21");
       frac = uv_frac_bits_for(largest);
       for (const glm::dvec2& uv : o.mesh.uvs) {
         out->uvs[i].push_back(static_cast<std::int32_t>(std::llround(std::ldexp(uv.x * img.width, frac))));
@@ -107,25 +172,27 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
     for (const auto& tri : o.mesh.triangles)
       for (std::uint32_t index : tri) out->indices[i].push_back(static_cast<std::uint16_t>(index));
 
+    out->clip_from_object.push_back(to_mat4_block(view_projection * o.model));
     for (const scene::Projector& p : s.projectors) {
-      out->projector_from_object[i].push_back(to_mat4_block(scene::projector_texture_matrix(p) * o.model));
-      out->light_clip_from_object[i].push_back(to_mat4_block(scene::projector_view_projection(p) * o.model));
+      out->projector_from_object.push_back(to_mat4_block(scene::projector_texture_matrix(p) * o.model));
+      out->light_clip_from_object.push_back(to_mat4_block(scene::projector_view_projection(p) * o.model));
     }
 
     ObjectData d{};
     d.positions = pos.data();
     d.uvs = out->uvs[i].data();
     d.indices = out->indices[i].data();
+    d.vertex_count = static_cast<std::uint16_t>(o.mesh.positions.size());
     d.triangle_count = static_cast<std::uint32_t>(o.mesh.triangles.size());
-    d.texture = static_cast<std::int16_t>(o.texture);
+    d.bounds = bounds_of(pos);
+    d.texture = object_texture[i];
     d.uv_frac_bits = static_cast<std::uint8_t>(frac);
     d.cull = o.cull == scene::Cull::back ? Cull::back : Cull::none;
     for (int c = 0; c < 3; ++c) d.color[c] = to_unorm8(o.color[c]);
-    d.clip_from_object = to_mat4_block(view_projection * o.model);
-    d.projector_from_object = projector_count ? out->projector_from_object[i].data() : nullptr;
-    d.light_clip_from_object = projector_count ? out->light_clip_from_object[i].data() : nullptr;
+    d.texgen = TexgenSpace::none;
     out->objects.push_back(d);
     out->object_names.push_back(o.name);
+    max_vertices = std::max(max_vertices, d.vertex_count);
   }
 
   PreparedScene& ps = out->scene;
@@ -133,10 +200,14 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
   ps.height = static_cast<std::uint16_t>(s.height);
   for (int c = 0; c < 3; ++c) ps.ambient[c] = to_unorm8(s.ambient[c]);
   ps.textures = out->textures.data();
+  ps.texture_count = static_cast<std::uint8_t>(out->textures.size());
   ps.objects = out->objects.data();
   ps.object_count = static_cast<std::uint16_t>(out->objects.size());
   ps.projectors = out->projectors.data();
   ps.projector_count = static_cast<std::uint8_t>(out->projectors.size());
+  ps.max_vertex_count = max_vertices;
+  out->matrices = FrameMatrices{out->clip_from_object.data(), out->projector_from_object.data(),
+                                out->light_clip_from_object.data()};
   return out;
 }
 

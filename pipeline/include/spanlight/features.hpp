@@ -1,15 +1,52 @@
-// What a scene uses, known at compile time, so what it does not use is not
-// compiled (tgx's idea): a firmware build bakes one Features type; the host
-// tools instantiate the full one. Runtime knobs that cost nothing to keep
-// dynamic (span length, depth bits) live in Precision.
+// What a scene uses, known at compile time, so that what it does not use is
+// not compiled (tgx's idea). `spanlight bake` writes one Features value per
+// scene; the host tools instantiate the pipeline with everything on.
+//
+//   render_frame<baked::features>(...)          // firmware: only the scene's code
+//   render_frame<host_features(format)>(...)    // host: every feature, knobs at run time
+//
+// A Features value is a template argument (a C++20 class-type parameter), so
+// every field reads by name at its point of use: `if constexpr (F.shadows)`.
 #pragma once
 
 #include <cstdint>
 
-#include "fixedpoint/reciprocal.hpp"
-#include "spanlight/pixel_inline.hpp"
+#include "spanlight/knobs.hpp"
 
 namespace spanlight {
+
+struct Features {
+  std::uint8_t max_projectors = 4;  // 0 links no projector code at all
+  bool shadows = true;              // shadow maps and the depth compare
+  bool pcf = true;                  // the pcf2x2 shadow filter (else nearest only)
+  bool nearest = true;              // some texture is sampled nearest
+  bool bilinear = true;             // some texture (or projector image) is sampled bilinearly
+  bool clamped = true;              // some object texture wraps with clamp or border (else repeat only)
+  bool tinted = true;               // some textured object has a colour other than white
+  PixelFormat format = PixelFormat::rgb888;
+  bool fused = true;                // the fused pass is linked
+  bool multipass = true;            // the paper's passes are linked
+  // The reciprocal of the perspective divide: fixed at bake time for firmware;
+  // 0 table bits = chosen at run time from Knobs (the host).
+  std::uint8_t table_bits = 0;
+  std::uint8_t newton = 0;
+
+  friend constexpr bool operator==(const Features&, const Features&) = default;
+};
+
+// The host's build: every feature, the reciprocal and the passes as the knobs say.
+constexpr Features host_features(PixelFormat format) {
+  Features f;
+  f.format = format;
+  return f;
+}
+
+// Whether a build with these features can render with these knobs.
+constexpr bool supports(const Features& f, const Knobs& k) {
+  if (k.format != f.format) return false;
+  if (k.passes == Passes::fused ? !f.fused : !f.multipass) return false;
+  return f.table_bits == 0 || (f.table_bits == k.table_bits && f.newton == k.newton);
+}
 
 // Calls fn(j) for each projector j in [begin, end). Unrolled over the
 // compile-time maximum N, so j is a constant in each copy and a walk's
@@ -20,44 +57,5 @@ template <int N, typename Fn>
     if (j >= begin && j < end) fn(j);
   }
 }
-
-enum class PixelFormat : std::uint8_t { rgb888, rgb565 };
-
-// The divide of the perspective step: table lookup plus Newton steps.
-template <int TableBits, int NewtonSteps>
-struct TableReciprocal {
-  static constexpr int table_bits = TableBits;
-  static constexpr int newton_steps = NewtonSteps;
-  static constexpr fixedpoint::Reciprocal of(std::uint32_t d) {
-    return fixedpoint::reciprocal<TableBits, NewtonSteps>(d);
-  }
-  // 2^62 / m for m already in [2^31, 2^32): of(m) without the CLZ (a libgcc call on ARMv6-M).
-  static constexpr std::uint32_t of_normalised(std::uint32_t m) {
-    return fixedpoint::reciprocal_normalised<TableBits, NewtonSteps>(m);
-  }
-};
-
-template <int MaxProjectors, bool Shadows, bool Pcf, bool Bilinear, PixelFormat Format, typename Reciprocal>
-struct Features {
-  static constexpr int max_projectors = MaxProjectors;  // 0 links no projector code at all
-  static constexpr bool shadows = Shadows;              // shadow maps and the depth compare
-  static constexpr bool pcf = Pcf;                      // pcf2x2 filter present (else nearest only)
-  static constexpr bool bilinear = Bilinear;            // some texture uses bilinear
-  static constexpr PixelFormat format = Format;
-  using reciprocal = Reciprocal;
-};
-
-// The host tools' build: everything on, up to four projectors.
-template <PixelFormat Format, typename Reciprocal>
-using HostFeaturesWith = Features<4, true, true, true, Format, Reciprocal>;
-template <PixelFormat Format, int TableBits, int NewtonSteps>
-using HostFeatures = HostFeaturesWith<Format, TableReciprocal<TableBits, NewtonSteps>>;
-
-struct Precision {
-  std::uint8_t span_log2 = 4;    // a reciprocal every 2^span_log2 pixels; 0 = every pixel
-  std::uint8_t span_tolerance_log2 = 3;  // shorten segments that would drift > 1/8 texel; 0: never; at most 10
-  std::uint8_t depth_bits = 24;  // 16 or 24: bits kept in the depth buffer and shadow maps
-  bool fused = false;            // one pass per pixel instead of the paper's multipass
-};
 
 }  // namespace spanlight

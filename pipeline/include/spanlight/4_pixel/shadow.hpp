@@ -1,4 +1,4 @@
-// Shadow maps: the compare of condition 4, r/q - bias <= D. `nearest` reads
+// Stage 4b, shadow maps: the compare of condition 4, r/q - bias <= D. `nearest` reads
 // the texel containing (s/q, t/q); `pcf2x2` weighs the four comparisons around
 // it bilinearly (texel centres at half-integers, indices clamped to the map).
 // Depth is compared in Q1.30; the map keeps its top depth_bits.
@@ -6,14 +6,15 @@
 
 #include <cstdint>
 
-#include "spanlight/prepared_scene.hpp"
+#include "fixedpoint/bits.hpp"
+#include "spanlight/scene.hpp"
 
 namespace spanlight {
 
 inline constexpr int shadow_proj_frac_bits = 28;  // s/q, t/q, r/q arrive in Q3.28
 
 template <typename DepthT>
-inline bool shadow_lit_at(const DepthT* map, std::int32_t size, std::int32_t x, std::int32_t y_from_bottom,
+[[gnu::always_inline]] inline bool shadow_lit_at(const DepthT* map, std::int32_t size, std::int32_t x, std::int32_t y_from_bottom,
                           std::int64_t r_minus_bias_q30, int depth_bits) {
   x = x < 0 ? 0 : (x >= size ? size - 1 : x);
   y_from_bottom = y_from_bottom < 0 ? 0 : (y_from_bottom >= size ? size - 1 : y_from_bottom);
@@ -24,7 +25,7 @@ inline bool shadow_lit_at(const DepthT* map, std::int32_t size, std::int32_t x, 
 
 // Fraction of light let through, in 1/256 (0..256).
 template <bool Pcf, typename DepthT>
-inline std::uint32_t shadow_factor(const ProjectorData& p, const DepthT* map, std::int32_t s, std::int32_t t,
+[[gnu::always_inline]] inline std::uint32_t shadow_factor(const ProjectorData& p, const DepthT* map, std::int32_t s, std::int32_t t,
                                    std::int32_t r, int depth_bits) {
   const std::int32_t size = p.map_size;
   const std::int64_t r_biased = (std::int64_t{r} << (30 - shadow_proj_frac_bits)) - p.bias;

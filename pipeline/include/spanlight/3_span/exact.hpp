@@ -1,4 +1,4 @@
-// Stage 4a, the exact perspective-correct value at one point of a triangle:
+// Stage 3a, the exact perspective-correct value at one point of a triangle:
 //
 //   lambda_i = E_i / 2A                      (exact edge values, one multiply)
 //   beta_i   = lambda_i w_i^-1 / sum(...)    (one reciprocal: the table + Newton knob)
@@ -6,28 +6,19 @@
 //   s/q, t/q, r/q = sum beta_i (s,t,r)_i / sum beta_i q_i   (one reciprocal per projector)
 //
 // The divisor for a projector is q, not the eye's 1/w (Segal et al., eq. 7).
-// Values are computed per "group" (the surface uv, or one projector), so each
-// group can be subdivided on its own schedule.
+// The weights are computed once per point and shared; values are computed per
+// "group" (the surface uv, or one projector), so each group can be subdivided
+// on its own schedule.
 #pragma once
 
 #include <cstdint>
 
-#include "spanlight/setup.hpp"
+#include "spanlight/2_triangle/attributes.hpp"
+#include "spanlight/2_triangle/setup.hpp"
+#include "spanlight/3_span/divide.hpp"
 
 namespace spanlight {
 
-inline constexpr int proj_frac_bits = 28;             // s/q, t/q, r/q in Q3.28
-inline constexpr std::int32_t proj_limit = 1 << 30;   // saturate at +-4: far outside [0, 1]
-inline constexpr std::int32_t one_q30 = 1 << 30;
-
-template <int P>
-struct TriangleAttributes {
-  std::int32_t u0, du1, du2, v0, dv1, dv2;  // texel coordinates * 2^uv_frac_bits (|u| < 2^29)
-  // per projector: (s, t, r, q) at vertex 0 and the deltas, normalised so |value| < 2^30
-  std::int32_t proj0[P > 0 ? P : 1][4];
-  std::int32_t proj_d1[P > 0 ? P : 1][4];
-  std::int32_t proj_d2[P > 0 ? P : 1][4];
-};
 
 constexpr std::int32_t mix3(std::int32_t base, std::int32_t d1, std::int32_t d2, std::int32_t b1, std::int32_t b2) {
   // |d| < 2^31, b <= 2^30: each product < 2^61, the sum < 2^62.
@@ -43,26 +34,39 @@ constexpr std::int32_t divide_q28(std::int32_t n, const fixedpoint::Reciprocal& 
   return saturate_proj(fixedpoint::mul_s32_u32(n, rcp.mantissa) >> (rcp.shift - proj_frac_bits));
 }
 
+// The screen barycentrics lambda_1, lambda_2 (Q0.30) at a point, from its exact edge values.
+struct ScreenWeights {
+  std::int32_t l1, l2;
+};
+constexpr ScreenWeights screen_weights(const TriangleSetup& t, std::int64_t e1, std::int64_t e2) {
+  return {barycentric(t, e1), barycentric(t, e2)};
+}
+
+// Window depth in Q0.32 at a point: z0 + dz1 l1 + dz2 l2, with the products kept
+// to Q.32 (|dz| <= 2^30, l <= 2^30: each < 2^60), clamped into [0, 2^32 - 1].
+constexpr std::uint32_t depth_q32(const TriangleSetup& t, const ScreenWeights& w) {
+  const std::int64_t z = (std::int64_t{t.z0} << 2) + ((fixedpoint::mul_s32(t.dz1, w.l1) + fixedpoint::mul_s32(t.dz2, w.l2)) >> 28);
+  return z < 0 ? 0u : (z > 0xFFFFFFFF ? 0xFFFFFFFFu : static_cast<std::uint32_t>(z));
+}
+
 // Perspective-correct barycentrics beta_1, beta_2 (Q0.30) and the
-// screen-linear sum of lambda_i / w_i they were normalised by.
+// screen-linear sum of lambda_i / w_i they were normalised by (the uv divisor).
 struct Weights {
   std::int32_t b1, b2;
   std::uint32_t rho;
 };
 
-template <typename R>
-constexpr Weights perspective_weights(const TriangleSetup& t, std::int64_t e1, std::int64_t e2) {
-  const std::int32_t l1 = barycentric(t, e1);
-  const std::int32_t l2 = barycentric(t, e2);
-  std::int32_t l0 = one_q30 - l1 - l2;
+template <typename Divide>
+constexpr Weights perspective_weights(const TriangleSetup& t, const ScreenWeights& s, const Divide& divide) {
+  std::int32_t l0 = one_q30 - s.l1 - s.l2;
   if (l0 < 0) l0 = 0;
   // rho_i = lambda_i * w_i^-1, each < 2^30.
   const std::uint32_t rho0 = static_cast<std::uint32_t>(fixedpoint::mul_u32(std::uint32_t(l0), t.omega[0]) >> 31);
-  const std::uint32_t rho1 = static_cast<std::uint32_t>(fixedpoint::mul_u32(std::uint32_t(l1), t.omega[1]) >> 31);
-  const std::uint32_t rho2 = static_cast<std::uint32_t>(fixedpoint::mul_u32(std::uint32_t(l2), t.omega[2]) >> 31);
+  const std::uint32_t rho1 = static_cast<std::uint32_t>(fixedpoint::mul_u32(std::uint32_t(s.l1), t.omega[1]) >> 31);
+  const std::uint32_t rho2 = static_cast<std::uint32_t>(fixedpoint::mul_u32(std::uint32_t(s.l2), t.omega[2]) >> 31);
   const std::uint32_t sum = rho0 + rho1 + rho2;  // < 3 * 2^30
-  if (sum == 0) return {l1, l2, 0};
-  const fixedpoint::Reciprocal rcp = R::of(sum);
+  if (sum == 0) return {s.l1, s.l2, 0};
+  const fixedpoint::Reciprocal rcp = divide.of(sum);
   const int shift = rcp.shift - 30;  // >= 32 because sum < 2^32
   return {static_cast<std::int32_t>(fixedpoint::mul_u32(rho1, rcp.mantissa) >> shift),
           static_cast<std::int32_t>(fixedpoint::mul_u32(rho2, rcp.mantissa) >> shift), sum};
@@ -77,32 +81,29 @@ struct GroupPoint {
   bool front;  // q > 0 (always true for uv)
 };
 
-inline constexpr int uv_group = -1;
+inline constexpr int uv_group = -1;  // the group index of the surface's uv; projectors are 0..P-1
 
-template <int P, typename R>
-constexpr GroupPoint evaluate_group(const TriangleSetup& t, const TriangleAttributes<P>& a, int group,
-                                    std::int64_t e1, std::int64_t e2) {
-  const Weights w = perspective_weights<R>(t, e1, e2);
-  GroupPoint out;  // every field set below: no zeroing (it was a memset per point)
-  if (group == uv_group) {
-    out.value[0] = mix3(a.u0, a.du1, a.du2, w.b1, w.b2);
-    out.value[1] = mix3(a.v0, a.dv1, a.dv2, w.b1, w.b2);
-    out.value[2] = 0;
-    out.denominator = w.rho;
-    out.front = true;
-    return out;
-  }
-  const int j = group;
+template <int P>
+constexpr void uv_point(const TriangleAttributes<P>& a, const Weights& w, GroupPoint& out) {
+  out.value[0] = mix3(a.u0, a.du1, a.du2, w.b1, w.b2);
+  out.value[1] = mix3(a.v0, a.dv1, a.dv2, w.b1, w.b2);
+  out.value[2] = 0;
+  out.denominator = w.rho;
+  out.front = true;
+}
+
+template <int P, typename Divide>
+constexpr void projector_point(const TriangleAttributes<P>& a, int j, const Weights& w, const Divide& divide,
+                               GroupPoint& out) {
   const std::int32_t q = mix3(a.proj0[j][3], a.proj_d1[j][3], a.proj_d2[j][3], w.b1, w.b2);
   out.denominator = fixedpoint::mul_s32_u32(q, w.rho);  // q/w up to the triangle's constant scale
   out.front = q > 0;
   if (q <= 0) {
     out.value[0] = out.value[1] = out.value[2] = -proj_limit;  // never inside [0, 1]
-    return out;
+    return;
   }
-  const fixedpoint::Reciprocal rcp = R::of(static_cast<std::uint32_t>(q));  // one reciprocal, three products
+  const fixedpoint::Reciprocal rcp = divide.of(static_cast<std::uint32_t>(q));  // one reciprocal, three products
   for (int c = 0; c < 3; ++c) out.value[c] = divide_q28(mix3(a.proj0[j][c], a.proj_d1[j][c], a.proj_d2[j][c], w.b1, w.b2), rcp);
-  return out;
 }
 
 // Between two exact points a < b of one row. The group's divisor E (1/w for
@@ -112,12 +113,12 @@ constexpr GroupPoint evaluate_group(const TriangleSetup& t, const TriangleAttrib
 //   f(x) = f_a + (f_b - f_a) * gamma,   gamma = (x - a) E_b / ((b - x) E_a + (x - a) E_b)
 //
 // (the 1-D perspective-correct interpolation): one reciprocal and one product
-// per value at each subdivision point, where evaluate_group needs edge values,
+// per value at each subdivision point, where an exact point needs edge values,
 // barycentrics, three weights and two reciprocals. gamma is in [0, 1], so f
 // stays between f_a and f_b: no clamp is ever reached inside.
 //
 // Error: num and den are cut to 32 bits together (2^-31 relative each), the
-// reciprocal adds R's relative error e and the product a truncation of
+// reciprocal adds the divide's relative error e and the product a truncation of
 // 2^-30, so |gamma error| <= gamma (e + 2^-30) + 2^-30 and the value is off by
 // at most |f_b - f_a| (e + 2^-29) + 1 unit from the exact ratio of the ends.
 struct RowInterpolation {
@@ -140,9 +141,9 @@ struct RowInterpolation {
   }
 
   // The point at column x in [a, b]; its denominator is (b - x) E_a + (x - a) E_b,
-  // the divisor up to the row's constant (linear_headroom() compares ratios only).
-  template <typename R>
-  constexpr void at(std::int32_t x, GroupPoint& out) const {
+  // the divisor up to the row's constant (segment lengths compare ratios only).
+  template <typename Divide>
+  constexpr void at(std::int32_t x, const Divide& divide, GroupPoint& out) const {
     const auto before = static_cast<std::uint32_t>(x - a), after = static_cast<std::uint32_t>(length) - before;
     const std::uint64_t num = fixedpoint::mul_u32_u16(e_b, before);  // < 2^12 * 2^31 (spans < 2^13 px)
     const std::uint64_t den = num + fixedpoint::mul_u32_u16(e_a, after);
@@ -157,7 +158,7 @@ struct RowInterpolation {
     const int n = fixedpoint::clz64(den);
     const std::uint32_t den_top = fixedpoint::high_word_shifted_left(den, n);
     const std::uint32_t num_top = fixedpoint::high_word_shifted_left(num, n);
-    const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(num_top, R::of_normalised(den_top)) >> 32);  // Q0.30
+    const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(num_top, divide.of_normalised(den_top)) >> 32);  // Q0.30
     for (int k = 0; k < 3; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
   }
 };

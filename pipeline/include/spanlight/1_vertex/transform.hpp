@@ -1,4 +1,4 @@
-// Stage 1, transform: object space to clip space and to each projector's
+// Stage 1a, transform: object space to clip space and to each projector's
 // (s, t, r, q). Matrices are block floating point (fixedpoint::Mat4Block:
 // int32 mantissas, one shared exponent) prepared on the host; positions are
 // Q15.16; results are int64 with 32 fraction bits, enough to keep 1/256 px

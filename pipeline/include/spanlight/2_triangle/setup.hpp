@@ -1,4 +1,4 @@
-// Stage 3b, triangle setup: orientation and culling, exact integer edge
+// Stage 2, triangle setup: orientation and culling, exact integer edge
 // functions with the top-left rule, and the normalisations the span stage
 // needs (1/(2*area) for barycentrics, per-vertex perspective weights).
 //
@@ -10,8 +10,8 @@
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
-#include "spanlight/project.hpp"
-#include "spanlight/prepared_scene.hpp"
+#include "spanlight/1_vertex/project.hpp"
+#include "spanlight/scene.hpp"
 
 namespace spanlight {
 
@@ -76,15 +76,16 @@ struct Edge {
 struct TriangleSetup {
   Edge edge[3];  // edge i runs from vertex i+1 to vertex i+2: E_i = 2*area * lambda_i
   std::int32_t row_begin, row_end;  // rows whose centres lie within the vertical extent
-  // lambda_i in Q0.30 = ((E_i >> area_shift) * area_rcp) >> 32 (area_shift < 0: shift left)
+  // lambda_i in Q0.30 = ((E_i >> area_shift) * area_rcp) >> 32 (area_shift < 0: shift left), D >> area_shift in [2^31, 2^32)
   int area_shift;
-  std::uint64_t area_rcp;  // floor(2^62 / (D >> area_shift)), D = 2*area in subpixel^2
+  std::uint32_t area_rcp;  // ~ 2^62 / (D >> area_shift), in (2^30, 2^31]; D = 2 * area in subpixel^2
   std::int32_t z0, dz1, dz2;  // window depth at vertex 0 and the deltas to 1 and 2, Q1.30
-  // Depth steps by dz/dx per pixel (Q1.30 with 32 more fraction bits), so a
-  // pixel's depth depends only on its span's start, never on how a pass cuts
-  // the span: every pass sees bit-identical depth. Triangles too thin for the
-  // gradient to fit evaluate depth exactly at each pixel instead.
-  std::int64_t dzdx;
+  // Depth steps by dz/dx per pixel in Q0.32 from each span's first pixel, so
+  // a pixel's depth depends only on its span, never on how a pass cuts the
+  // span: every pass sees bit-identical depth. Triangles too steep for the
+  // gradient to fit 32 bits (|dz/dx| >= 1/2 per pixel) evaluate depth exactly
+  // at each pixel instead.
+  std::int32_t dzdx;
   bool depth_per_pixel;
   std::uint32_t omega[3];     // perspective weights, proportional to 1/w_i, max in [2^30, 2^31]
   std::uint8_t order[3];      // which input vertex sits at each setup slot (orientation swap)
@@ -97,8 +98,7 @@ constexpr std::int64_t signed_double_area(const ScreenVertex& a, const ScreenVer
 // Builds the setup; false when the triangle is culled, has no area, or
 // covers no row of the target. In y-down window coordinates a triangle that
 // is counter-clockwise as seen in the image (front) has a negative area.
-constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int width, int height, TriangleSetup& t) {
-  (void)width;
+constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int height, TriangleSetup& t) {
   std::int64_t area2 = signed_double_area(in[0], in[1], in[2]);
   if (area2 == 0) return false;
   if (cull == Cull::back && area2 > 0) return false;  // clockwise on screen
@@ -112,15 +112,17 @@ constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int width,
 
   const std::int32_t y_min = v0.y < v1.y ? (v0.y < v2.y ? v0.y : v2.y) : (v1.y < v2.y ? v1.y : v2.y);
   const std::int32_t y_max = v0.y > v1.y ? (v0.y > v2.y ? v0.y : v2.y) : (v1.y > v2.y ? v1.y : v2.y);
-  std::int64_t r0 = floor_div(std::int64_t{y_min} - 128 + 255, 256);  // first centre >= y_min
-  std::int64_t r1 = floor_div(std::int64_t{y_max} - 128, 256) + 1;    // past the last centre <= y_max
+  // Rows whose centres 256 r + 128 lie in [y_min, y_max]; |y| < 2^21 (the guard band), so an
+  // arithmetic shift is the floor division.
+  std::int32_t r0 = (y_min - 128 + 255) >> 8;  // first centre >= y_min
+  std::int32_t r1 = ((y_max - 128) >> 8) + 1;  // past the last centre <= y_max
   if (r0 < 0) r0 = 0;
   if (r1 > height) r1 = height;
   if (r0 >= r1) return false;
-  t.row_begin = static_cast<std::int32_t>(r0);
-  t.row_end = static_cast<std::int32_t>(r1);
+  t.row_begin = r0;
+  t.row_end = r1;
 
-  const std::int64_t centre_y = r0 * 256 + 128;
+  const std::int64_t centre_y = std::int64_t{r0} * 256 + 128;
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
   for (int i = 0; i < 3; ++i) {
     const ScreenVertex& a = *v[(i + 1) % 3];
@@ -128,28 +130,30 @@ constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int width,
     t.edge[i].start(a.x, a.y, b.x, b.y, centre_y);
   }
 
-  // Normalise D into [2^30, 2^31) so lambda = E/D needs one 64-bit multiply.
-  t.area_shift = fixedpoint::bit_length(static_cast<std::uint64_t>(area2)) - 31;
-  const std::uint64_t d_norm = t.area_shift >= 0 ? static_cast<std::uint64_t>(area2) >> t.area_shift
-                                                 : static_cast<std::uint64_t>(area2) << -t.area_shift;
-  t.area_rcp = (std::uint64_t{1} << 62) / d_norm;
+  // Normalise D into [2^31, 2^32) so lambda = E/D is one 32x32 product with
+  // the table reciprocal (the vertex divide's: 8-bit table, two Newton steps,
+  // relative error below 2^-28.9, docs/reciprocal.md): no division per triangle.
+  t.area_shift = fixedpoint::bit_length(static_cast<std::uint64_t>(area2)) - 32;
+  const auto d_norm = static_cast<std::uint32_t>(t.area_shift >= 0 ? static_cast<std::uint64_t>(area2) >> t.area_shift
+                                                                    : static_cast<std::uint64_t>(area2) << -t.area_shift);
+  t.area_rcp = fixedpoint::reciprocal_normalised<8, 2>(d_norm);  // ~ 2^62 / d_norm, in (2^30, 2^31]
 
   t.z0 = v0.z;
   t.dz1 = v1.z - v0.z;
   t.dz2 = v2.z - v0.z;
-  // dz/dx = (dz1 * slope1 + dz2 * slope2) / D: the numerator is < 2^62; times
-  // 2^62/Dn (taken as Q.30 below 2^31) and 2^-(28 + area_shift) gives Q.62.
+  // dz/dx in Q0.32 = 4 (dz1 slope1 + dz2 slope2) / D, dz in Q1.30 (|dz| <= 2^30), slope = dE/dcolumn
+  // (|slope| < 2^30): |num| < 2^61. 4/D = rcp 2^-(60 + area_shift), rcp halved to fit int32.
   {
-    const std::int64_t num = std::int64_t{t.dz1} * (t.edge[1].slope >> 1) + std::int64_t{t.dz2} * (t.edge[2].slope >> 1);
-    const auto rcp = static_cast<std::int32_t>(t.area_rcp >> 2);  // < 2^31
-    const int shift = 28 + t.area_shift - 1;                       // the slopes were halved above
-    // |result| < 2^(bits(num) + 31 - shift): keep it below 2^61, else go per pixel.
+    const std::int64_t num = std::int64_t{t.dz1} * t.edge[1].slope + std::int64_t{t.dz2} * t.edge[2].slope;
+    const int shift = 60 + t.area_shift - 1;
     const std::uint64_t magnitude = static_cast<std::uint64_t>(num < 0 ? -num : num);
-    t.depth_per_pixel = shift < 0 || fixedpoint::bit_length(magnitude) + 31 - shift > 61;
+    // |result| < 2^(bits(num) + 30 - shift): keep it below 2^31 (|dz/dx| < 1/2 per pixel), else per pixel.
+    t.depth_per_pixel = shift < 0 || fixedpoint::bit_length(magnitude) + 30 - shift > 31;
     t.dzdx = 0;
     if (!t.depth_per_pixel) {
-      const int pre = shift > 32 ? shift - 32 : 0;
-      t.dzdx = fixedpoint::mul_shift_wide(num >> pre, rcp, shift - pre);
+      const int pre = shift > 32 ? shift - 32 : 0;  // num >> pre loses at most 2^-32 of a pixel's step
+      t.dzdx = static_cast<std::int32_t>(
+          fixedpoint::mul_shift_wide(num >> pre, static_cast<std::int32_t>(t.area_rcp >> 1), shift - pre));
     }
   }
 
@@ -165,15 +169,14 @@ constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int width,
   return true;
 }
 
-// lambda_i at a point from its exact edge value, Q0.30, clamped to [0, 1].
+// lambda_i at a point from its exact edge value E (0 <= E <= D inside), Q0.30, clamped to [0, 1]:
+// E >> area_shift < 2^32 and area_rcp <= 2^31, so one 32x32 product.
 constexpr std::int32_t barycentric(const TriangleSetup& t, std::int64_t e) {
   if (e <= 0) return 0;
   const std::uint64_t e_norm = t.area_shift >= 0 ? static_cast<std::uint64_t>(e) >> t.area_shift
                                                  : static_cast<std::uint64_t>(e) << -t.area_shift;
-  // e_norm <= 2^31 and rcp in (2^31, 2^32]: a 32x32 product, except rcp = 2^32 (D = 2^30), where lambda = e_norm.
-  const std::uint64_t lambda = t.area_rcp >> 32 ? e_norm
-                                                : fixedpoint::mul_u32(static_cast<std::uint32_t>(e_norm),
-                                                                      static_cast<std::uint32_t>(t.area_rcp)) >> 32;
+  if (e_norm >> 32) return 1 << 30;  // outside, beyond the far edge: clamp
+  const std::uint64_t lambda = fixedpoint::mul_u32(static_cast<std::uint32_t>(e_norm), t.area_rcp) >> 32;
   return lambda > (1u << 30) ? (1 << 30) : static_cast<std::int32_t>(lambda);
 }
 

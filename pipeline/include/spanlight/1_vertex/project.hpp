@@ -1,4 +1,4 @@
-// Stage 3a, the perspective divide: clip space to snapped window coordinates.
+// Stage 1c, the perspective divide: clip space to snapped window coordinates.
 // One reciprocal per vertex (8-bit table, two Newton steps: relative error
 // below 2^-28.9, docs/reciprocal.md — as good as a 12-bit table and 7.5 KB
 // less flash), so a 4096-px-wide window lands within 2^-8 subpixel before the
@@ -9,7 +9,7 @@
 
 #include "fixedpoint/bits.hpp"
 #include "fixedpoint/reciprocal.hpp"
-#include "spanlight/transform.hpp"
+#include "spanlight/1_vertex/transform.hpp"
 
 namespace spanlight {
 

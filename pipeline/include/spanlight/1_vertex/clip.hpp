@@ -1,4 +1,4 @@
-// Stage 2, clip: homogeneous clipping in clip space (Sutherland-Hodgman).
+// Stage 1b, clip: homogeneous clipping in clip space (Sutherland-Hodgman).
 // The near plane (z >= -w) keeps the divide away from w <= 0; the far plane
 // (z <= w) matches OpenGL; the guard band (|x|, |y| <= G * w) keeps snapped
 // screen coordinates below 2^21 subpixels so setup's int64 products never
@@ -9,7 +9,7 @@
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
-#include "spanlight/transform.hpp"
+#include "spanlight/1_vertex/transform.hpp"
 
 namespace spanlight {
 

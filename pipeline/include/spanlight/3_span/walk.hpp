@@ -1,0 +1,361 @@
+// Stage 3c, spans: walk a row's covered columns c0..c1. Each group (the surface
+// uv, each projector) is evaluated exactly (exact.hpp) at the span's two ends,
+// and in between at the ends and middles of segments 2^k pixels long, k chosen
+// per segment from the closed-form bound of segments.hpp; there from the 1-D
+// perspective interpolation of the span's ends (RowInterpolation, one
+// reciprocal). Within a segment values step as the quadratic through those
+// three points: two adds a pixel. A projector whose q changes sign inside the
+// span is evaluated at every pixel; one that is behind (q <= 0) or outside its
+// frustum along the whole span is held constant (q/w is linear on the row, and
+// s/q, t/q, r/q are monotonic where q > 0).
+//
+// Depth is stepped by the triangle's dz/dx from the span's first pixel, and
+// each group keeps its own schedule, so a pixel's values do not depend on
+// which other groups a pass interpolates: the multipass and the fused pass see
+// the same numbers.
+//
+// Values step in each group's own scale (StepScale): uv of a repeating texture
+// in fractions of the texture's size, wrapping modulo 2^32 exactly as the
+// texture repeats (so as many fraction bits as 32 bits allow), other uv in
+// texels * 2^uv_frac_bits, projectors in Q3.28.
+//
+// The walk hands the pass's kernel runs of pixels between two events
+// (PixelRun): the first pixel's values and how each further pixel moves them.
+#pragma once
+
+#include <cstdint>
+#include <type_traits>
+
+#include "spanlight/3_span/exact.hpp"
+#include "spanlight/3_span/segments.hpp"
+#include "spanlight/features.hpp"
+
+namespace spanlight {
+
+// How a group's exact values (texels * 2^frac, or Q3.28) become stepping values:
+// (value + offset) << shift, as a 32-bit pattern that may wrap.
+struct StepScale {
+  std::int32_t offset[3];
+  std::uint8_t shift[3];
+  std::uint8_t texel_bits;  // log2 of stepping units per texel (the smallest over the components)
+};
+
+// What a pass needs interpolated: depth always; uv (stepped in its sampler's
+// scale) and a range of projectors on request.
+struct SpanNeeds {
+  bool uv;
+  StepScale uv_scale;
+  int projector_begin, projector_end;
+};
+
+struct SpanControl {
+  int span_log2;                     // segments of at most 2^span_log2 pixels
+  int tolerance_log2;                // 2^-T texel for the segments' bound (0: unbounded)
+  const StepScale* uv;                // of the object being drawn
+  int uv_frac_bits;                  // its exact uv's sub-texel bits
+  const std::uint16_t* projector_texels;  // larger side of each projector's image
+  const std::uint8_t* projector_texel_bits;  // log2 of Q3.28 units per texel of each projector's image
+  std::uint32_t z_limit;             // DepthFormat::z_limit: the deepest a stepped depth may go
+};
+
+// One value along a run: at the first pixel, and how it moves per pixel
+// (v += step; step += curve, both wrapping).
+struct Stepped {
+  std::uint32_t value, step, curve;
+};
+
+template <int P>
+struct PixelRun {
+  std::uint32_t z;  // Q0.32, at the first pixel
+  std::int32_t dz;  // per pixel (wrapping add; the walk keeps the run within [0, z_limit])
+  Stepped u, v;
+  Stepped s[P > 0 ? P : 1], t[P > 0 ? P : 1], r[P > 0 ? P : 1];  // Q3.28
+  bool front[P > 0 ? P : 1];  // q > 0 all along the run
+};
+
+// Advances a stepped value by `count` pixels: what `count` rounds of the kernel's adds give.
+[[gnu::always_inline]] constexpr void advance(Stepped& x, std::uint32_t count) {
+  x.value += count * x.step + (count * (count - 1) / 2) * x.curve;
+  x.step += count * x.curve;
+}
+
+// The texel distance between two points of a group, 8 fraction bits (the largest component's).
+constexpr std::uint64_t texel_delta8(const GroupPoint& a, const GroupPoint& b, int group, const SpanControl& c) {
+  std::uint64_t d = 0;
+  const int components = group == uv_group ? 2 : 3;  // r/q is read at the shadow map's texels: as fine as the image's
+  for (int k = 0; k < components; ++k) {
+    const std::int64_t delta = std::int64_t{b.value[k]} - a.value[k];
+    const std::uint64_t m = static_cast<std::uint64_t>(delta < 0 ? -delta : delta);
+    if (m > d) d = m;
+  }
+  if (group == uv_group) return d >> (c.uv_frac_bits - 8);  // uv_frac_bits >= 8
+  return (d * c.projector_texels[group]) >> (proj_frac_bits - 8);  // d < 2^32, size <= 2^12
+}
+
+// Everything a group's walk needs of the triangle to evaluate it exactly at a column.
+template <int P, typename Divide>
+struct GroupSource {
+  const TriangleSetup& t;
+  const TriangleAttributes<P>& a;
+  const Divide& divide;
+
+  constexpr void exact_at(int group, std::int32_t column, GroupPoint& out) const {
+    const ScreenWeights s = screen_weights(t, t.edge[1].value_at(column), t.edge[2].value_at(column));
+    const Weights w = perspective_weights(t, s, divide);
+    if (group == uv_group) uv_point(a, w, out);
+    else projector_point(a, group, w, divide, out);
+  }
+};
+
+enum class GroupMode : std::uint8_t { interpolated, constant, per_pixel };
+
+// One group along a span: its stepping state from the current pixel, and the
+// exact point that ends the segment.
+struct GroupSpan {
+  Stepped value[3];
+  bool front;
+  GroupMode mode;
+  std::int32_t segment_end;  // the column of the next exact point (c1 + 1: none before the span ends)
+  StepScale scale;
+  SegmentPlanner planner;    // each segment's length
+  std::int32_t exact_start[3];  // the exact values at the current segment's start
+  GroupPoint end;            // the exact point at segment_end
+  GroupPoint last;           // the exact point at the span's end c1
+  RowInterpolation row;
+
+  template <int P, typename Divide>
+  constexpr void start(const GroupSource<P, Divide>& src, int group, const SpanControl& c, const Weights& w0,
+                       const Weights& w1, std::int32_t c0, std::int32_t c1) {
+    scale = group == uv_group ? *c.uv : StepScale{{0, 0, 0}, {0, 0, 0}, c.projector_texel_bits[group]};
+    GroupPoint first;
+    point_from(src, group, w0, first);
+    if (c0 == c1) {
+      take_constant(first, c1);
+      return;
+    }
+    point_from(src, group, w1, last);
+    if (!first.front && !last.front) {  // behind the projector all along (q/w is linear)
+      take_constant(first, c1);
+      return;
+    }
+    if (first.front != last.front) {  // q changes sign: every pixel exactly
+      take_per_pixel(first, c0);
+      return;
+    }
+    if (!interpolable(first, last)) {
+      if (group != uv_group && outside_all_along(first, last)) take_constant(first, c1);
+      else take_per_pixel(first, c0);
+      return;
+    }
+    mode = GroupMode::interpolated;
+    row.init(c0, c1, first, last);
+    planner.start(c0, c1, row.e_a, row.e_b, texel_delta8(first, last, group, c), scale.texel_bits, c.tolerance_log2,
+                  c.span_log2);
+    take(first);
+    plan(src.divide, c0, c1);
+  }
+
+  // At segment_end: take the exact point there and plan the next segment; in
+  // per-pixel mode, evaluate this pixel exactly.
+  template <int P, typename Divide>
+  [[gnu::noinline]] constexpr void arrive(const GroupSource<P, Divide>& src, int group, std::int32_t column, std::int32_t c1) {
+    if (mode == GroupMode::per_pixel) {
+      GroupPoint p;
+      if (column == c1) p = last;
+      else src.exact_at(group, column, p);
+      take(p);
+      segment_end = column + 1;
+      return;
+    }
+    take(end);
+    plan(src.divide, column, c1);
+  }
+
+ private:
+  // Both ends outside the same side of [0, 1] for one of s/q, t/q, r/q: outside all along.
+  static constexpr bool outside_all_along(const GroupPoint& p, const GroupPoint& q) {
+    constexpr std::int32_t one = std::int32_t{1} << proj_frac_bits;
+    for (int k = 0; k < 3; ++k) {
+      if ((p.value[k] < 0 && q.value[k] < 0) || (p.value[k] > one && q.value[k] > one)) return true;
+    }
+    return false;
+  }
+
+  template <int P, typename Divide>
+  static constexpr void point_from(const GroupSource<P, Divide>& src, int group, const Weights& w, GroupPoint& out) {
+    if (group == uv_group) uv_point(src.a, w, out);
+    else projector_point(src.a, group, w, src.divide, out);
+  }
+
+  constexpr std::uint32_t scaled(const GroupPoint& p, int k) const {
+    return static_cast<std::uint32_t>(p.value[k] + scale.offset[k]) << scale.shift[k];
+  }
+  constexpr void take(const GroupPoint& p) {
+    for (int k = 0; k < 3; ++k) {
+      value[k] = {scaled(p, k), 0, 0};
+      exact_start[k] = p.value[k];
+    }
+    front = p.front;
+  }
+  constexpr void take_constant(const GroupPoint& p, std::int32_t c1) {
+    mode = GroupMode::constant;
+    take(p);
+    segment_end = c1 + 1;
+  }
+  constexpr void take_per_pixel(const GroupPoint& p, std::int32_t c0) {
+    mode = GroupMode::per_pixel;
+    take(p);
+    segment_end = c0 + 1;
+  }
+
+  // The segment from `column` (its values taken) to the next exact point: the
+  // planned power of two, or the largest one that fits before the span's end.
+  template <typename Divide>
+  constexpr void plan(const Divide& divide, std::int32_t column, std::int32_t c1) {
+    if (column >= c1) {  // the span's last pixel
+      segment_end = c1 + 1;
+      return;
+    }
+    int k = planner.length_log2_at(column);
+    while ((std::int32_t{1} << k) > c1 - column) --k;
+    segment_end = column + (std::int32_t{1} << k);
+    if (segment_end == c1) end = last;
+    else row.at(segment_end, divide, end);
+    if (k == 0) return;  // one pixel: nothing steps
+    GroupPoint middle;
+    row.at(column + (std::int32_t{1} << (k - 1)), divide, middle);
+    for (int c = 0; c < 3; ++c) {
+      // Differences of the exact values (the start's is kept from `end` of the last plan, or the span's first point).
+      const QuadraticSteps q = quadratic_steps(std::int64_t{middle.value[c]} - exact_start[c],
+                                               std::int64_t{end.value[c]} - middle.value[c], k, scale.shift[c]);
+      value[c].step = q.step;
+      value[c].curve = q.curve;
+    }
+  }
+};
+
+// Walks columns [c0, c1] of one row, calling run_pixels(first column, count,
+// PixelRun) for runs between events. UV and Projectors are fixed at compile
+// time so that each pass steps only what it reads: a depth pass steps depth alone.
+template <int P, bool UV, bool Projectors, typename Divide, typename RunFn>
+inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
+                      const SpanControl& control, const Divide& divide, std::int32_t c0, std::int32_t c1,
+                      RunFn&& run_pixels) {
+  constexpr int PS = P > 0 && Projectors ? P : 1;
+  const GroupSource<P, Divide> src{t, a, divide};
+  const ScreenWeights s0 = screen_weights(t, t.edge[1].value_at(c0), t.edge[2].value_at(c0));
+
+  PixelRun<P> run{};  // groups the walk does not step keep zero values and steps
+  // Depth: exact at c0, then dz/dx. If the stepped depth could leave [0, z_limit]
+  // (rounding at the near or far plane), or the triangle is too steep for dz/dx,
+  // every pixel takes its exact depth, clamped.
+  run.z = depth_q32(t, s0);
+  run.dz = t.dzdx;
+  bool z_exact = t.depth_per_pixel;
+  if (!z_exact) {
+    const std::int64_t z_end = std::int64_t{run.z} + std::int64_t{run.dz} * (c1 - c0);
+    z_exact = run.z > control.z_limit || z_end < 0 || z_end > std::int64_t{control.z_limit};
+  }
+
+  GroupSpan uv;
+  GroupSpan projector[PS];
+  const int j0 = needs.projector_begin, j1 = needs.projector_end;
+  if constexpr (UV || Projectors) {
+    const ScreenWeights s1 = screen_weights(t, t.edge[1].value_at(c1), t.edge[2].value_at(c1));
+    const Weights w0 = perspective_weights(t, s0, divide), w1 = perspective_weights(t, s1, divide);
+    if constexpr (UV) uv.start(src, uv_group, control, w0, w1, c0, c1);
+    if constexpr (Projectors)
+      for_each_projector<PS>(j0, j1, [&](int j) { projector[j].start(src, j, control, w0, w1, c0, c1); });
+  }
+
+  std::int32_t column = c0;
+  for (;;) {
+    // The run ends at the first event of any group (or at the next pixel when depth goes per pixel).
+    std::int32_t run_end = z_exact ? column + 1 : c1 + 1;
+    if constexpr (UV) {
+      if (uv.segment_end < run_end) run_end = uv.segment_end;
+      run.u = uv.value[0];
+      run.v = uv.value[1];
+    }
+    if constexpr (Projectors) {
+      for_each_projector<PS>(j0, j1, [&](int j) {
+        const GroupSpan& g = projector[j];
+        if (g.segment_end < run_end) run_end = g.segment_end;
+        run.s[j] = g.value[0];
+        run.t[j] = g.value[1];
+        run.r[j] = g.value[2];
+        run.front[j] = g.front;
+      });
+    }
+    if (z_exact) {
+      const ScreenWeights s = screen_weights(t, t.edge[1].value_at(column), t.edge[2].value_at(column));
+      const std::uint32_t z = depth_q32(t, s);
+      run.z = z > control.z_limit ? control.z_limit : z;
+    }
+    const std::int32_t count = run_end - column;
+    run_pixels(column, count, run);
+    if (run_end > c1) return;
+    const auto n = static_cast<std::uint32_t>(count);
+    run.z += static_cast<std::uint32_t>(run.dz) * n;  // wraps as count adds would
+    // Each group either has its event here or moves on by the run's steps.
+    if constexpr (UV) {
+      if (run_end == uv.segment_end) {
+        uv.arrive(src, uv_group, run_end, c1);
+      } else {
+        advance(uv.value[0], n);
+        advance(uv.value[1], n);
+      }
+    }
+    if constexpr (Projectors) {
+      for_each_projector<PS>(j0, j1, [&](int j) {
+        GroupSpan& g = projector[j];
+        if (run_end == g.segment_end) {
+          g.arrive(src, j, run_end, c1);
+        } else {
+          for (int k = 0; k < 3; ++k) advance(g.value[k], n);
+        }
+      });
+    }
+    column = run_end;
+  }
+}
+
+// Calls fn(bool_constant<UV>, bool_constant<Projectors>) with the walk shape
+// `needs` asks for, instantiating only the shapes the caller allows.
+template <bool AllowUV, bool AllowProjectors, typename Fn>
+inline void with_walk_shape(const SpanNeeds& needs, Fn&& fn) {
+  const bool uv = AllowUV && needs.uv;
+  const bool projectors = AllowProjectors && needs.projector_begin < needs.projector_end;
+  if constexpr (AllowUV && AllowProjectors) {
+    if (uv && projectors) return fn(std::true_type{}, std::true_type{});
+  }
+  if constexpr (AllowUV) {
+    if (uv) return fn(std::true_type{}, std::false_type{});
+  }
+  if constexpr (AllowProjectors) {
+    if (projectors) return fn(std::false_type{}, std::true_type{});
+  }
+  fn(std::false_type{}, std::false_type{});
+}
+
+// The row loop: each row's covered columns from the three edges' half-planes.
+template <typename SpanFn>
+inline void rasterize_rows(TriangleSetup& t, int width, SpanFn&& span) {
+  for (std::int32_t row = t.row_begin; row < t.row_end; ++row) {
+    std::int64_t lo = 0, hi = width - 1;
+    bool empty = false;
+    for (const Edge& e : t.edge) {
+      if (e.slope > 0) {
+        if (-e.quotient > lo) lo = -e.quotient;
+      } else if (e.slope < 0) {
+        if (e.quotient < hi) hi = e.quotient;
+      } else {
+        empty |= e.row_value < e.bias;
+      }
+    }
+    if (!empty && lo <= hi) span(row, static_cast<std::int32_t>(lo), static_cast<std::int32_t>(hi));
+    for (Edge& e : t.edge) e.next_row();
+  }
+}
+
+}  // namespace spanlight

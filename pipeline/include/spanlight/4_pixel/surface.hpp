@@ -1,0 +1,95 @@
+// Stage 4d, the surface colour of an object at a pixel: object colour times its
+// texture at (u, v), chosen once per object, so a run's loop calls one sampler
+// and the choices a scene does not make are not compiled (Features).
+#pragma once
+
+#include <cstdint>
+
+#include "spanlight/3_span/walk.hpp"
+#include "spanlight/4_pixel/colour.hpp"
+#include "spanlight/4_pixel/texture.hpp"
+#include "spanlight/features.hpp"
+#include "spanlight/inline.hpp"
+#include "spanlight/scene.hpp"
+
+namespace spanlight {
+
+enum class SurfaceKind : std::uint8_t { colour, nearest_repeat, nearest_clamp, nearest_border, bilinear_repeat,
+                                        bilinear_clamp, bilinear_border };
+
+struct Surface {
+  SurfaceKind kind;
+  bool tinted;      // the object's colour is not white: the texel is multiplied by it
+  Rgb colour;       // the object's colour
+  TexelGrid grid;
+  StepScale scale;  // how the walk steps uv for this sampler
+};
+
+constexpr Surface surface_of(const ObjectData& o, const TextureData* textures) {
+  Surface s{};
+  s.colour = rgb(o.color[0], o.color[1], o.color[2]);
+  s.tinted = s.colour != 0xFFFFFFu;
+  if (o.texture < 0) {
+    s.kind = SurfaceKind::colour;
+    return s;
+  }
+  const TextureData& t = textures[o.texture];
+  const int f = o.uv_frac_bits;
+  s.grid = texel_grid(t.levels[0], f);
+  const int wrap = t.wrap == Wrap::repeat ? 0 : (t.wrap == Wrap::clamp ? 1 : 2);
+  const bool bilinear = t.filter != Filter::nearest;
+  s.kind = static_cast<SurfaceKind>((bilinear ? 4 : 1) + wrap);
+  // Bilinear reads the texels around the point half a texel back (centres at half-integers).
+  const std::int32_t back = bilinear ? -(std::int32_t{1} << (f - 1)) : 0;
+  if (t.wrap == Wrap::repeat) {  // a fraction of the size in 32 bits: x_shift = 32 - log2 width >= f
+    s.scale = {{back, back, 0},
+               {static_cast<std::uint8_t>(s.grid.x_shift - f), static_cast<std::uint8_t>(s.grid.y_shift - f), 0},
+               static_cast<std::uint8_t>(s.grid.x_shift < s.grid.y_shift ? s.grid.x_shift : s.grid.y_shift)};
+  } else {
+    s.scale = {{back, back, 0}, {0, 0, 0}, static_cast<std::uint8_t>(f)};
+  }
+  return s;
+}
+
+// Calls fn(sample) with sample(x, y) -> Rgb, the surface's sampler of stepped
+// coordinates, instantiated only for the kinds features F allows.
+template <Features F, typename Fn>
+[[gnu::always_inline]] inline void with_sampler(const Surface& s, Fn&& fn) {
+  const TexelGrid& g = s.grid;
+  auto sampled = [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    if constexpr (F.tinted) {
+      if (s.tinted) {
+        const Rgb colour = s.colour;
+        return fn([&sample, colour](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return modulate(colour, sample(x, y)); });
+      }
+    }
+    fn(sample);
+  };
+  auto as_signed = [](std::uint32_t x) SPANLIGHT_LAMBDA_INLINE_ATTR { return static_cast<std::int32_t>(x); };
+  switch (s.kind) {
+    case SurfaceKind::colour: {
+      const Rgb c = s.colour;
+      return fn([c](std::uint32_t, std::uint32_t) SPANLIGHT_LAMBDA_INLINE_ATTR { return c; });
+    }
+    case SurfaceKind::bilinear_repeat:
+      if constexpr (F.bilinear) return sampled([&g](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_repeat(g, x, y); });
+      break;
+    case SurfaceKind::bilinear_clamp:
+      if constexpr (F.bilinear && F.clamped) return sampled([&g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_clamp(g, as_signed(x), as_signed(y)); });
+      break;
+    case SurfaceKind::bilinear_border:
+      if constexpr (F.bilinear && F.clamped) return sampled([&g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_border(g, as_signed(x), as_signed(y)); });
+      break;
+    case SurfaceKind::nearest_repeat:
+      if constexpr (F.nearest) return sampled([&g](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest_repeat(g, x, y); });
+      break;
+    case SurfaceKind::nearest_clamp:
+      if constexpr (F.nearest && F.clamped) return sampled([&g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest<Wrap::clamp>(g, as_signed(x), as_signed(y)); });
+      break;
+    case SurfaceKind::nearest_border:
+      if constexpr (F.nearest && F.clamped) return sampled([&g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest<Wrap::border>(g, as_signed(x), as_signed(y)); });
+      break;
+  }
+}
+
+}  // namespace spanlight

@@ -1,0 +1,157 @@
+// Stage 4a, texture sampling: nearest and bilinear fetches from the baked
+// layout (scene.hpp: 0x00RRGGBB words, rows from the bottom, a one-texel frame
+// that answers for the wrap mode). Coordinates arrive as the span walk steps
+// them (walk.hpp, StepScale): for a repeating texture as a fraction of its size
+// in 32 bits (the integer texel is the top log2(size) bits, and wrapping is
+// the repeat), else in texels with `frac` sub-texel bits (8..16). For bilinear
+// filtering they already point half a texel back (texel centres sit at
+// half-integers). Bilinear weights keep 8 sub-texel bits (D3D11's minimum) and
+// are rounded once, exactly:
+//
+//   c = round(sum c_ij w_ij / 2^16),  w_00 = (256 - fx)(256 - fy), ..., w_11 = fx fy.
+#pragma once
+
+#include <cstdint>
+
+#include "fixedpoint/bits.hpp"
+#include "spanlight/4_pixel/colour.hpp"
+#include "spanlight/scene.hpp"
+
+namespace spanlight {
+
+// One level of a texture as a sampler reads it, with the per-object uv format.
+struct TexelGrid {
+  const std::uint32_t* texels;  // texel (0, 0)
+  std::int32_t stride;          // words from a row to the next
+  std::int32_t width, height;
+  int frac;                     // texels * 2^frac coordinates (not repeating): 8..16
+  int x_shift, y_shift;         // repeating coordinates: 32 - log2 of the width, of the height
+};
+
+constexpr int log2_of_power_of_two(std::uint32_t x) { return 31 - fixedpoint::clz32(x); }
+
+constexpr TexelGrid texel_grid(const TextureLevel& level, int frac) {
+  return {level.texels, level.stride, level.width, level.height, frac, 32 - log2_of_power_of_two(level.width),
+          32 - log2_of_power_of_two(level.height)};
+}
+
+// ---- bilinear -----------------------------------------------------------------
+
+// The exact blend of four texels, all three channels. Red and blue share 16-bit
+// lanes (0x00RR00BB): a horizontal blend h = c0 (256 - fx) + c1 fx is below
+// 2^16 in each lane. The vertical blend of h needs 24 bits, so h is split into
+// its high and low bytes, each blended in the lanes (again below 2^16):
+//   S = 256 A + B,  A = sum hi(h) w_y,  B = sum lo(h) w_y,
+//   round(S / 2^16) = (A + floor(B / 256) + 128) >> 8,
+// and A + B/256 <= S/256 <= 255 * 256, so the lanes never carry into each other.
+// Green is alone in its word: its two products need no split.
+struct BilinearSums {
+  std::uint32_t a_rb, b_rb;  // A and B above, red and blue lanes
+  std::uint32_t g;           // sum g_ij w_ij, < 2^24
+};
+
+[[gnu::always_inline]] inline BilinearSums bilinear_sums(std::uint32_t t00, std::uint32_t t10, std::uint32_t t01,
+                                                         std::uint32_t t11, std::uint32_t fx, std::uint32_t fy) {
+  constexpr std::uint32_t lanes = 0x00FF00FFu;
+  const std::uint32_t ifx = 256u - fx, ify = 256u - fy;
+  const std::uint32_t h_top = (t00 & lanes) * ifx + (t10 & lanes) * fx;
+  const std::uint32_t h_bottom = (t01 & lanes) * ifx + (t11 & lanes) * fx;
+  const std::uint32_t a = ((h_top >> 8) & lanes) * ify + ((h_bottom >> 8) & lanes) * fy;
+  const std::uint32_t b = (h_top & lanes) * ify + (h_bottom & lanes) * fy;
+  const std::uint32_t g_top = ((t00 >> 8) & 255u) * ifx + ((t10 >> 8) & 255u) * fx;
+  const std::uint32_t g_bottom = ((t01 >> 8) & 255u) * ifx + ((t11 >> 8) & 255u) * fx;
+  return {a, b, g_top * ify + g_bottom * fy};
+}
+
+[[gnu::always_inline]] inline Rgb round_sums(const BilinearSums& s) {
+  constexpr std::uint32_t lanes = 0x00FF00FFu;
+  const std::uint32_t rb = ((s.a_rb + ((s.b_rb >> 8) & lanes) + 0x00800080u) >> 8) & lanes;
+  return rb | (((s.g + 0x8000u) >> 16) << 8);
+}
+
+// Each channel's sum before rounding (8-bit level * 2^16): a projector keeps these
+// bits through its colour multiply.
+struct Texel16 {
+  std::uint32_t r, g, b;
+};
+[[gnu::always_inline]] inline Texel16 unrounded(const BilinearSums& s) {
+  return {((s.a_rb >> 16) << 8) + (s.b_rb >> 16), s.g, ((s.a_rb & 0xFFFFu) << 8) + (s.b_rb & 0xFFFFu)};
+}
+
+// Where the top-left texel of a bilinear footprint is, and the weights.
+struct Footprint {
+  const std::uint32_t* p;  // texel (x0, y0)
+  std::uint32_t fx, fy;
+};
+
+[[gnu::always_inline]] inline BilinearSums footprint_sums(const Footprint& f, std::int32_t stride) {
+  return bilinear_sums(f.p[0], f.p[1], f.p[stride], f.p[stride + 1], f.fx, f.fy);
+}
+
+// Repeating: x0 is the top bits, the weight the next 8 (x_shift >= 20 for sizes up to 4096).
+[[gnu::always_inline]] inline Rgb bilinear_repeat(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
+  const std::uint32_t x0 = x >> g.x_shift, y0 = y >> g.y_shift;
+  const std::uint32_t fx = (x >> (g.x_shift - 8)) & 255u, fy = (y >> (g.y_shift - 8)) & 255u;
+  return round_sums(footprint_sums({g.texels + static_cast<std::int32_t>(y0) * g.stride + static_cast<std::int32_t>(x0), fx, fy}, g.stride));
+}
+
+// Clamp to edge: beyond the centres of the outer texels the edge texel alone
+// (x0 in [0, width - 1]; the frame holds column `width` for the zero weight).
+[[gnu::always_inline]] inline Rgb bilinear_clamp(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+  const std::int32_t x_max = (g.width - 1) << g.frac, y_max = (g.height - 1) << g.frac;
+  x = x < 0 ? 0 : (x > x_max ? x_max : x);
+  y = y < 0 ? 0 : (y > y_max ? y_max : y);
+  const int weight_shift = g.frac - 8;
+  return round_sums(footprint_sums({g.texels + (y >> g.frac) * g.stride + (x >> g.frac),
+                                    (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
+                                    (static_cast<std::uint32_t>(y) >> weight_shift) & 255u}, g.stride));
+}
+
+// Border on an object's texture, where the coordinate may lie anywhere: texels
+// outside the image are black. Out of line: rare, and bulky inlined.
+[[gnu::noinline]] inline Rgb bilinear_border(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+  const std::int32_t x0 = x >> g.frac, y0 = y >> g.frac;
+  auto at = [&](std::int32_t xi, std::int32_t yi) -> std::uint32_t {
+    return xi < 0 || yi < 0 || xi >= g.width || yi >= g.height ? 0u : g.texels[yi * g.stride + xi];
+  };
+  const int weight_shift = g.frac - 8;
+  return round_sums(bilinear_sums(at(x0, y0), at(x0 + 1, y0), at(x0, y0 + 1), at(x0 + 1, y0 + 1),
+                                  (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
+                                  (static_cast<std::uint32_t>(y) >> weight_shift) & 255u));
+}
+
+// ---- nearest ------------------------------------------------------------------
+
+[[gnu::always_inline]] inline Rgb nearest_repeat(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
+  return g.texels[static_cast<std::int32_t>(y >> g.y_shift) * g.stride + static_cast<std::int32_t>(x >> g.x_shift)];
+}
+
+template <Wrap W>
+[[gnu::always_inline]] inline Rgb nearest(const TexelGrid& g, std::int32_t u, std::int32_t v) {
+  std::int32_t x = u >> g.frac, y = v >> g.frac;
+  if constexpr (W == Wrap::clamp) {
+    x = x < 0 ? 0 : (x >= g.width ? g.width - 1 : x);
+    y = y < 0 ? 0 : (y >= g.height ? g.height - 1 : y);
+  } else {
+    if (x < 0 || y < 0 || x >= g.width || y >= g.height) return 0;
+  }
+  return g.texels[y * g.stride + x];
+}
+
+// ---- a projector's image --------------------------------------------------------
+
+// The image at (s/q, t/q) in [0, 1]^2 (the caller has tested it), in texels with 8
+// fraction bits, unrounded when bilinear. Its frame is black (border): from a
+// coordinate in [0, size], x0 = floor(x - 1/2) lies in [-1, size - 1].
+[[gnu::always_inline]] inline Texel16 projector_texel(const TextureData& image, std::int32_t x8, std::int32_t y8, bool bilinear_ok) {
+  const TextureLevel& level = image.levels[0];
+  if (bilinear_ok && image.filter != Filter::nearest) {
+    const std::int32_t x = x8 - 128, y = y8 - 128;
+    return unrounded(footprint_sums({level.texels + (y >> 8) * level.stride + (x >> 8), static_cast<std::uint32_t>(x) & 255u,
+                                     static_cast<std::uint32_t>(y) & 255u}, level.stride));
+  }
+  const Rgb c = nearest<Wrap::border>(texel_grid(level, 8), x8, y8);
+  return {red(c) << 16, green(c) << 16, blue(c) << 16};
+}
+
+}  // namespace spanlight

@@ -1,0 +1,301 @@
+// Stage 5a, the passes' work on a run of pixels, in the paper's order:
+//   shadow depth    : z <  D   -> D = z                              (per shadowed projector, its map)
+//   depth + ambient : z <  Z   -> Z = z, C = ambient
+//   light j         : z == Z   -> C = min(1, C + lit_j * shadow_j * colour_j * image_j)
+//   modulate        : z == Z   -> C = C * surface
+//   fused           : z <  Z   -> all of the above at once, with the same
+//                                 quantisation steps, so the bytes are the same.
+// A kernel is what the span walk hands its runs to (the PassKernel concept).
+#pragma once
+
+#include <concepts>
+#include <cstdint>
+#include <span>
+
+#include "spanlight/3_span/walk.hpp"
+#include "spanlight/4_pixel/colour.hpp"
+#include "spanlight/4_pixel/depth.hpp"
+#include "spanlight/4_pixel/light.hpp"
+#include "spanlight/4_pixel/surface.hpp"
+#include "spanlight/features.hpp"
+#include "spanlight/hooks.hpp"
+#include "spanlight/inline.hpp"
+
+namespace spanlight {
+
+// What the geometry walk asks of a pass: per object, what to interpolate; per
+// run of pixels, the work. may_need_uv / may_need_projectors say at compile time
+// which walk shapes can occur, so no other is compiled for the pass.
+template <typename K, int P>
+concept PassKernel = requires(K& k, const ObjectData& o, const PixelRun<P>& r) {
+  { K::may_need_uv } -> std::convertible_to<bool>;
+  { K::may_need_projectors } -> std::convertible_to<bool>;
+  { k.object(o) } -> std::same_as<SpanNeeds>;
+  k.run(std::uint32_t{0}, std::int32_t{1}, r);
+};
+
+// The buffers of the band a pass writes: pixel (row, column) of the band is index row * width + column.
+template <PixelFormat Format, typename DepthT>
+struct BandBuffers {
+  typename ColorTraits<Format>::Storage* color;
+  DepthT* depth;
+  std::uint8_t* tie_mask;
+};
+
+// The z-equal test of the light and modulate passes: the depth this surface
+// stores here is the one the depth pass kept, and no other surface with the
+// same depth claimed the pixel first.
+template <typename DepthT>
+[[gnu::always_inline]] inline bool z_equal_and_first(const DepthT* depth, std::uint8_t* tie_mask, const DepthFormat& f,
+                                                     std::uint32_t i, std::uint32_t z) {
+  const std::uint32_t d = f.store(z);
+  return d != f.clear && d == depth[i] && claim_pixel(tie_mask, i);
+}
+
+// Calls body(k, z) for pixels k = 0 .. count - 1 of a run, stepping depth.
+template <typename Body>
+[[gnu::always_inline]] inline void for_each_pixel(std::int32_t count, std::uint32_t z, std::int32_t dz, Body&& body) {
+  for (std::int32_t k = 0; k < count; ++k) {
+    body(k, z);
+    z += static_cast<std::uint32_t>(dz);
+  }
+}
+
+// The same, stepping uv too (body(k, z, x, y), x and y in the sampler's scale).
+template <typename Body>
+[[gnu::always_inline]] inline void for_each_pixel(std::int32_t count, std::uint32_t z, std::int32_t dz, Stepped u,
+                                                  Stepped v, Body&& body) {
+  for (std::int32_t k = 0; k < count; ++k) {
+    body(k, z, u.value, v.value);
+    z += static_cast<std::uint32_t>(dz);
+    u.value += u.step;
+    u.step += u.curve;
+    v.value += v.step;
+    v.step += v.curve;
+  }
+}
+
+[[gnu::always_inline]] inline void step(Stepped& x) {
+  x.value += x.step;
+  x.step += x.curve;
+}
+
+template <typename DepthT, typename Hooks>
+struct ShadowDepthKernel {
+  static constexpr bool may_need_uv = false, may_need_projectors = false;
+  DepthT* map;
+  DepthFormat depth;
+  Hooks& hooks;
+  SpanNeeds object(const ObjectData&) { return {false, {}, 0, 0}; }
+  template <int P>
+  void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    DepthT* d = map + i;
+    for_each_pixel(count, r.z, r.dz, [&](std::int32_t k, std::uint32_t z) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      const std::uint32_t stored = depth.store(z);
+      if (stored < d[k]) {
+        d[k] = static_cast<DepthT>(stored);
+        hooks.touched(Pass::shadow_depth, i + static_cast<std::uint32_t>(k));
+      }
+    });
+  }
+};
+
+template <Features F, typename DepthT, typename Hooks>
+struct DepthAmbientKernel {
+  using Color = ColorTraits<F.format>;
+  static constexpr bool may_need_uv = false, may_need_projectors = false;
+  BandBuffers<F.format, DepthT> band;
+  Rgb ambient;  // quantised to the format
+  DepthFormat depth;
+  Hooks& hooks;
+  SpanNeeds object(const ObjectData&) { return {false, {}, 0, 0}; }
+  template <int P>
+  void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    typename Color::Storage stored_ambient[Color::per_pixel];
+    Color::store(stored_ambient, ambient);
+    DepthT* d = band.depth + i;
+    typename Color::Storage* c = band.color + i * Color::per_pixel;
+    for_each_pixel(count, r.z, r.dz, [&](std::int32_t k, std::uint32_t z) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      const std::uint32_t stored = depth.store(z);
+      if (stored < d[k]) {
+        d[k] = static_cast<DepthT>(stored);
+        for (int b = 0; b < Color::per_pixel; ++b) c[k * Color::per_pixel + b] = stored_ambient[b];
+        hooks.touched(Pass::depth_ambient, i + static_cast<std::uint32_t>(k));
+      }
+    });
+  }
+};
+
+// The value a stepped value reaches after n pixels.
+[[gnu::always_inline]] constexpr std::int32_t after(const Stepped& x, std::uint32_t n) {
+  return static_cast<std::int32_t>(x.value + n * x.step + (n * (n - 1) / 2) * x.curve);
+}
+
+// Whether a projector can light some pixel of a run: q > 0, and not outside
+// the frustum at both ends on one side (each ratio is monotonic along the row).
+template <int P>
+[[gnu::always_inline]] inline bool may_light(const PixelRun<P>& r, int j, std::int32_t count) {
+  if (!r.front[j]) return false;
+  const auto last = static_cast<std::uint32_t>(count - 1);
+  auto outside = [&](const Stepped& x) {
+    const auto a = static_cast<std::int32_t>(x.value), b = after(x, last);
+    return (a < 0 && b < 0) || (a > proj_one && b > proj_one);
+  };
+  return !(outside(r.s[j]) || outside(r.t[j]) || outside(r.r[j]));
+}
+
+// A projector's stepped (s, t, r) at the current pixel.
+struct ProjectorValues {
+  Stepped s, t, r;
+  [[gnu::always_inline]] void next() {
+    step(s);
+    step(t);
+    step(r);
+  }
+  [[gnu::always_inline]] bool inside() const { return in_frustum(s_now(), t_now(), r_now()); }
+  [[gnu::always_inline]] std::int32_t s_now() const { return static_cast<std::int32_t>(s.value); }
+  [[gnu::always_inline]] std::int32_t t_now() const { return static_cast<std::int32_t>(t.value); }
+  [[gnu::always_inline]] std::int32_t r_now() const { return static_cast<std::int32_t>(r.value); }
+};
+
+template <Features F, typename DepthT, typename Hooks>
+struct LightKernel {
+  using Color = ColorTraits<F.format>;
+  static constexpr bool may_need_uv = false, may_need_projectors = true;
+  BandBuffers<F.format, DepthT> band;
+  Light<DepthT> light;
+  int projector;
+  DepthFormat depth;
+  Hooks& hooks;
+  SpanNeeds object(const ObjectData&) { return {false, {}, projector, projector + 1}; }
+  template <int P>
+  void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    const int j = projector;
+    const bool lights = may_light(r, j, count);
+    ProjectorValues p{r.s[j], r.t[j], r.r[j]};
+    for_each_pixel(count, r.z, r.dz, [&](std::int32_t k, std::uint32_t z) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      const std::uint32_t pixel = i + static_cast<std::uint32_t>(k);
+      if (z_equal_and_first(band.depth, band.tie_mask, depth, pixel, z)) {
+        hooks.touched(Pass::light, pixel);
+        if (lights && p.inside()) {
+          const Rgb add = projector_light<F.bilinear, F.shadows, F.pcf>(light, p.s_now(), p.t_now(), p.r_now(), 32 - depth.shift);
+          if (add != 0) {
+            typename Color::Storage* c = band.color + pixel * Color::per_pixel;
+            Color::store(c, add_light(Color::load(c), add));
+          }
+        }
+      }
+      p.next();
+    });
+  }
+};
+
+template <Features F, typename DepthT, typename Hooks>
+struct ModulateKernel {
+  using Color = ColorTraits<F.format>;
+  static constexpr bool may_need_uv = true, may_need_projectors = false;
+  BandBuffers<F.format, DepthT> band;
+  const TextureData* textures;
+  DepthFormat depth;
+  Hooks& hooks;
+  Surface surface{};
+  SpanNeeds object(const ObjectData& o) {
+    surface = surface_of(o, textures);
+    return {o.texture >= 0, surface.scale, 0, 0};
+  }
+  template <int P>
+  void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
+    with_sampler<F>(surface, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      for_each_pixel(count, r.z, r.dz, r.u, r.v, [&](std::int32_t k, std::uint32_t z, std::uint32_t u, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
+        const std::uint32_t pixel = i + static_cast<std::uint32_t>(k);
+        if (z_equal_and_first(band.depth, band.tie_mask, depth, pixel, z)) {
+          hooks.touched(Pass::modulate, pixel);
+          typename Color::Storage* c = band.color + pixel * Color::per_pixel;
+          Color::store(c, modulate(Color::load(c), sample(u, v)));
+        }
+      });
+    });
+  }
+};
+
+// Everything at once, with the multipass's quantisation steps: the light is
+// quantised to the format after the ambient and after each projector's add.
+template <Features F, typename DepthT, typename Hooks>
+struct FusedKernel {
+  using Color = ColorTraits<F.format>;
+  static constexpr int P = F.max_projectors;
+  static constexpr bool may_need_uv = true, may_need_projectors = P > 0;
+  BandBuffers<F.format, DepthT> band;
+  const TextureData* textures;
+  const Light<DepthT>* lights;  // one per projector
+  int projector_count;
+  Rgb ambient;  // quantised to the format
+  DepthFormat depth;
+  Hooks& hooks;
+  Surface surface{};
+  SpanNeeds object(const ObjectData& o) {
+    surface = surface_of(o, textures);
+    return {o.texture >= 0, surface.scale, 0, projector_count};
+  }
+
+  template <int PR>
+  void run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
+    bool any_light = false;
+    for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { any_light |= may_light(r, j, count); });
+    with_sampler<F>(surface, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      if (!any_light) constant_light(i, count, r, sample);
+      else lit(i, count, r, sample);
+    });
+  }
+
+ private:
+  // No projector reaches the run: the light is the ambient all along.
+  template <int PR, typename Sample>
+  [[gnu::always_inline]] void constant_light(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r, Sample& sample) const {
+    DepthT* d = band.depth + i;
+    typename Color::Storage* c = band.color + i * Color::per_pixel;
+    const Rgb light = ambient;
+    auto pixels = [&](auto shade) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      for_each_pixel(count, r.z, r.dz, r.u, r.v, [&](std::int32_t k, std::uint32_t z, std::uint32_t u, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
+        const std::uint32_t stored = depth.store(z);
+        if (stored < d[k]) {
+          d[k] = static_cast<DepthT>(stored);
+          hooks.touched(Pass::fused, i + static_cast<std::uint32_t>(k));
+          Color::store(c + k * Color::per_pixel, shade(sample(u, v)));
+        }
+      });
+    };
+    if (light == 0xFFFFFFu) pixels([](Rgb s) SPANLIGHT_LAMBDA_INLINE_ATTR { return s; });  // modulate by white: the surface
+    else pixels([light](Rgb s) SPANLIGHT_LAMBDA_INLINE_ATTR { return modulate(light, s); });
+  }
+
+  template <int PR, typename Sample>
+  [[gnu::always_inline]] void lit(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r, Sample& sample) const {
+    DepthT* d = band.depth + i;
+    typename Color::Storage* c = band.color + i * Color::per_pixel;
+    ProjectorValues p[P > 0 ? P : 1];
+    bool on[P > 0 ? P : 1];
+    for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      p[j] = {r.s[j], r.t[j], r.r[j]};
+      on[j] = may_light(r, j, count);
+    });
+    for_each_pixel(count, r.z, r.dz, r.u, r.v, [&](std::int32_t k, std::uint32_t z, std::uint32_t u, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      const std::uint32_t stored = depth.store(z);
+      if (stored < d[k]) {
+        d[k] = static_cast<DepthT>(stored);
+        hooks.touched(Pass::fused, i + static_cast<std::uint32_t>(k));
+        Rgb light = ambient;
+        for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
+          if (on[j] && p[j].inside()) {
+            const Rgb add = projector_light<F.bilinear, F.shadows, F.pcf>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift);
+            if (add != 0) light = Color::quantize(add_light(light, add));
+          }
+        });
+        Color::store(c + k * Color::per_pixel, modulate(light, sample(u, v)));
+      }
+      for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { p[j].next(); });
+    });
+  }
+};
+
+}  // namespace spanlight

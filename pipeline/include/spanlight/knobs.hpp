@@ -1,0 +1,123 @@
+// The knobs: every speed-against-accuracy setting of the pipeline, with its
+// allowed values, its default and its parser, in one place. The CLI (render,
+// bake, sweep, analyze, cost), the firmware bench and the baked configuration
+// all read and write this one type. Freestanding: the firmware parses its
+// command line with it.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+namespace spanlight {
+
+enum class PixelFormat : std::uint8_t { rgb888, rgb565, rgb565_be };  // rgb565_be: bytes swapped, as SPI panels take it
+enum class Passes : std::uint8_t { fused, multipass };                 // multipass: the paper's passes, the same bytes
+
+struct Knobs {
+  std::uint8_t span_log2 = 6;       // segments of at most 2^span_log2 pixels between exact divides
+  std::uint8_t tolerance_log2 = 5;  // linear stepping may drift at most 2^-N texel from the exact value; 0: never shorten
+  std::uint8_t table_bits = 8;      // the reciprocal's table: 2^table_bits entries
+  std::uint8_t newton = 1;          // Newton-Raphson steps after the table
+  std::uint8_t depth_bits = 24;     // depth buffer and shadow maps: 16 or 24 bits
+  PixelFormat format = PixelFormat::rgb888;
+  Passes passes = Passes::fused;
+
+  friend constexpr bool operator==(const Knobs&, const Knobs&) = default;
+};
+
+// One knob as the command lines name it: `--name value`.
+struct KnobInfo {
+  const char* name;
+  const char* help;
+  const char* const* values;  // the allowed values, as typed
+  std::uint8_t value_count;
+};
+
+namespace knob_values {
+inline constexpr const char* span[] = {"1", "2", "4", "8", "16", "32", "64"};
+inline constexpr const char* tolerance[] = {"0", "1", "2", "3", "4", "5", "6", "7", "8", "9", "10"};
+inline constexpr const char* table_bits[] = {"6", "8", "10", "12"};
+inline constexpr const char* newton[] = {"0", "1", "2"};
+inline constexpr const char* depth_bits[] = {"16", "24"};
+inline constexpr const char* format[] = {"rgb888", "rgb565", "rgb565-be"};
+inline constexpr const char* passes[] = {"fused", "multipass"};
+}  // namespace knob_values
+
+inline constexpr KnobInfo knob_table[] = {
+    {"span", "most pixels between exact perspective divides", knob_values::span, 7},
+    {"tolerance", "shorten segments so linear stepping drifts at most 2^-N texel from the exact value (0: never)",
+     knob_values::tolerance, 11},
+    {"table-bits", "reciprocal table index bits (6 with --newton 0 renders at about 20 dB: see docs/reciprocal.md)",
+     knob_values::table_bits, 4},
+    {"newton", "Newton-Raphson steps after the reciprocal table", knob_values::newton, 3},
+    {"depth-bits", "depth buffer and shadow map bits", knob_values::depth_bits, 2},
+    {"format", "framebuffer format (rgb565-be: RGB565 with its two bytes swapped, as SPI displays take it)",
+     knob_values::format, 3},
+    {"passes", "fused: one pass per pixel; multipass: the paper's passes (the same bytes)", knob_values::passes, 2},
+};
+
+enum class KnobError : std::uint8_t { ok, unknown_name, bad_value };
+
+namespace detail {
+constexpr int index_of(std::string_view value, const char* const* values, int count) {
+  for (int i = 0; i < count; ++i)
+    if (value == values[i]) return i;
+  return -1;
+}
+}  // namespace detail
+
+// Sets one knob from its name (without the dashes) and its value as typed.
+constexpr KnobError set_knob(Knobs& knobs, std::string_view name, std::string_view value) {
+  for (const KnobInfo& info : knob_table) {
+    if (name != info.name) continue;
+    const int i = detail::index_of(value, info.values, info.value_count);
+    if (i < 0) return KnobError::bad_value;
+    const auto n = static_cast<std::uint8_t>(i);
+    if (name == "span") knobs.span_log2 = n;
+    else if (name == "tolerance") knobs.tolerance_log2 = n;
+    else if (name == "table-bits") knobs.table_bits = static_cast<std::uint8_t>(6 + 2 * n);
+    else if (name == "newton") knobs.newton = n;
+    else if (name == "depth-bits") knobs.depth_bits = n == 0 ? 16 : 24;
+    else if (name == "format") knobs.format = static_cast<PixelFormat>(n);
+    else knobs.passes = static_cast<Passes>(n);
+    return KnobError::ok;
+  }
+  return KnobError::unknown_name;
+}
+
+// The value of one knob as typed (the inverse of set_knob), for reports and baked configurations.
+constexpr const char* knob_value(const Knobs& knobs, std::string_view name) {
+  if (name == "span") return knob_values::span[knobs.span_log2 <= 6 ? knobs.span_log2 : 0];
+  if (name == "tolerance") return knob_values::tolerance[knobs.tolerance_log2 <= 10 ? knobs.tolerance_log2 : 0];
+  if (name == "table-bits") return knob_values::table_bits[(knobs.table_bits - 6) / 2 & 3];
+  if (name == "newton") return knob_values::newton[knobs.newton <= 2 ? knobs.newton : 0];
+  if (name == "depth-bits") return knobs.depth_bits == 16 ? "16" : "24";
+  if (name == "format") return knob_values::format[static_cast<int>(knobs.format) % 3];
+  if (name == "passes") return knob_values::passes[static_cast<int>(knobs.passes) & 1];
+  return "";
+}
+
+// Whether every field holds one of its allowed values (a Knobs built by hand may not).
+constexpr bool knobs_valid(const Knobs& k) {
+  return k.span_log2 <= 6 && k.tolerance_log2 <= 10 && (k.table_bits == 6 || k.table_bits == 8 ||
+         k.table_bits == 10 || k.table_bits == 12) && k.newton <= 2 && (k.depth_bits == 16 || k.depth_bits == 24) &&
+         static_cast<int>(k.format) <= 2 && static_cast<int>(k.passes) <= 1;
+}
+
+// Parses `--name value` pairs (argv style); stops at the first error and says where.
+struct KnobParse {
+  KnobError error;
+  int at;  // index of the offending argument, or argc when all were read
+};
+constexpr KnobParse parse_knobs(Knobs& knobs, int argc, const char* const* argv) {
+  for (int i = 0; i < argc; i += 2) {
+    std::string_view name = argv[i];
+    if (name.size() < 3 || name[0] != '-' || name[1] != '-') return {KnobError::unknown_name, i};
+    if (i + 1 >= argc) return {KnobError::bad_value, i};
+    const KnobError e = set_knob(knobs, name.substr(2), argv[i + 1]);
+    if (e != KnobError::ok) return {e, e == KnobError::bad_value ? i + 1 : i};
+  }
+  return {KnobError::ok, argc};
+}
+
+}  // namespace spanlight

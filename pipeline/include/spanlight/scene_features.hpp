@@ -1,0 +1,49 @@
+// Which Features a scene needs: what `spanlight bake` switches on for it, and
+// what render_frame checks a build against before it draws. One function
+// answers both, so they cannot disagree.
+#pragma once
+
+#include "spanlight/features.hpp"
+#include "spanlight/scene.hpp"
+
+namespace spanlight {
+
+// The least a build must compile to draw `scene` with `knobs`.
+constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
+  Features f{};
+  f.max_projectors = scene.projector_count;
+  f.shadows = f.pcf = f.nearest = f.bilinear = f.clamped = f.tinted = false;
+  auto filter_of = [&](const TextureData& t) {
+    if (t.filter == Filter::nearest) f.nearest = true;
+    else f.bilinear = true;
+  };
+  for (std::uint16_t o = 0; o < scene.object_count; ++o) {
+    const ObjectData& object = scene.objects[o];
+    if (object.texture < 0) continue;
+    const TextureData& t = scene.textures[object.texture];
+    filter_of(t);
+    f.clamped |= t.wrap != Wrap::repeat;
+    f.tinted |= !(object.color[0] == 255 && object.color[1] == 255 && object.color[2] == 255);
+  }
+  for (int j = 0; j < scene.projector_count; ++j) {
+    const ProjectorData& p = scene.projectors[j];
+    filter_of(scene.textures[p.texture]);
+    f.shadows |= p.shadows;
+    f.pcf |= p.shadows && p.filter == ShadowFilter::pcf2x2;
+  }
+  f.format = knobs.format;
+  f.fused = knobs.passes == Passes::fused;
+  f.multipass = knobs.passes == Passes::multipass;
+  f.table_bits = knobs.table_bits;
+  f.newton = knobs.newton;
+  return f;
+}
+
+// Whether a build with features `built` has everything `needed` asks for.
+constexpr bool covers(const Features& built, const Features& needed) {
+  return built.max_projectors >= needed.max_projectors && (built.shadows || !needed.shadows) &&
+         (built.pcf || !needed.pcf) && (built.nearest || !needed.nearest) && (built.bilinear || !needed.bilinear) &&
+         (built.clamped || !needed.clamped) && (built.tinted || !needed.tinted);
+}
+
+}  // namespace spanlight

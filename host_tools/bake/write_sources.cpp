@@ -78,7 +78,9 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << ", .bilinear = " << boolean(f.bilinear) << ", .clamped = " << boolean(f.clamped) << ", .tinted = " << boolean(f.tinted)
       << ",\n    .format = spanlight::PixelFormat::" << (knobs.format == PixelFormat::rgb888 ? "rgb888" : (knobs.format == PixelFormat::rgb565 ? "rgb565" : "rgb565_be"))
       << ", .fused = " << boolean(f.fused) << ", .multipass = " << boolean(f.multipass)
-      << ",\n    .table_bits = " << int(f.table_bits) << ", .newton = " << int(f.newton) << "};\n"
+      << ",\n    .table_bits = " << int(f.table_bits) << ", .newton = " << int(f.newton) << ", .depth_bits = " << int(f.depth_bits)
+      << ",\n    .repeat_sizes = {" << int(f.repeat_sizes[0]) << ", " << int(f.repeat_sizes[1]) << ", " << int(f.repeat_sizes[2])
+      << ", " << int(f.repeat_sizes[3]) << "}, .any_repeat_size = " << boolean(f.any_repeat_size) << "};\n"
       << "// As `spanlight render` takes them: --span " << knob_value(knobs, "span") << " --tolerance "
       << knob_value(knobs, "tolerance") << " --table-bits " << knob_value(knobs, "table-bits") << " --newton "
       << knob_value(knobs, "newton") << " --depth-bits " << knob_value(knobs, "depth-bits") << " --format "

@@ -62,7 +62,7 @@ FixedFrame render_fixed_with_hooks(const PreparedStorage& prepared, const Knobs&
     if (status != RenderStatus::ok) throw RenderRefused(status);
     frame.rgb.resize(pixels * 3);
     for (std::size_t i = 0; i < pixels; ++i) {
-      const Rgb c = Color::load(color.data() + i * Color::per_pixel);
+      const Colour c = Color::load(color.data() + i * Color::per_pixel);
       frame.rgb[i * 3] = static_cast<std::uint8_t>(red(c));
       frame.rgb[i * 3 + 1] = static_cast<std::uint8_t>(green(c));
       frame.rgb[i * 3 + 2] = static_cast<std::uint8_t>(blue(c));

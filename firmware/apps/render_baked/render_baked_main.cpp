@@ -47,7 +47,7 @@ bool write_frame(const char* path) {
   if (!sink.open(path, {baked::width, baked::height})) return false;
   for (std::uint16_t y = 0; y < baked::height; ++y) {
     for (std::uint32_t x = 0; x < baked::width; ++x) {
-      const Rgb c = Color::load(color.data() + (std::uint32_t{y} * baked::width + x) * Color::per_pixel);
+      const Colour c = Color::load(color.data() + (std::uint32_t{y} * baked::width + x) * Color::per_pixel);
       line[x * 3] = static_cast<std::uint8_t>(red(c));
       line[x * 3 + 1] = static_cast<std::uint8_t>(green(c));
       line[x * 3 + 2] = static_cast<std::uint8_t>(blue(c));

@@ -30,6 +30,14 @@ struct Features {
   // 0 table bits = chosen at run time from Knobs (the host).
   std::uint8_t table_bits = 0;
   std::uint8_t newton = 0;
+  // Depth bits fixed at bake time (16 or 24); 0: the knob's, at run time.
+  std::uint8_t depth_bits = 0;
+  // The sizes of the repeating textures, (log2 width << 4) | log2 height, 0 for an
+  // unused slot: their samplers get the size as constants, which frees the
+  // registers a run loop needs. any_repeat_size: other sizes may occur too (a
+  // sampler with the size in registers is compiled for them).
+  std::uint8_t repeat_sizes[4] = {};
+  bool any_repeat_size = true;
 
   friend constexpr bool operator==(const Features&, const Features&) = default;
 };
@@ -45,6 +53,7 @@ constexpr Features host_features(PixelFormat format) {
 constexpr bool supports(const Features& f, const Knobs& k) {
   if (k.format != f.format) return false;
   if (k.passes == Passes::fused ? !f.fused : !f.multipass) return false;
+  if (f.depth_bits != 0 && f.depth_bits != k.depth_bits) return false;
   return f.table_bits == 0 || (f.table_bits == k.table_bits && f.newton == k.newton);
 }
 

@@ -88,7 +88,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
   const RenderStatus status = check_frame<F>(scene, target, knobs);
   if (status != RenderStatus::ok) return status;
   const auto divide = divide_for<F>(knobs);
-  const DepthFormat depth(knobs.depth_bits);
+  const DepthFormat<F.depth_bits> depth(knobs.depth_bits);
 
   Light<DepthT> lights[P > 0 ? P : 1] = {};
   for (int j = 0; j < scene.projector_count; ++j) {
@@ -99,7 +99,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
       const std::span<DepthT> map = target.shadow_maps[static_cast<std::size_t>(j)];
       for (DepthT& d : map) d = static_cast<DepthT>(depth.clear);
       hooks.pass_begin(Pass::shadow_depth, j);
-      ShadowDepthKernel<DepthT, std::remove_reference_t<Hooks>> kernel{map.data(), depth, hooks};
+      ShadowDepthKernel<F, DepthT, std::remove_reference_t<Hooks>> kernel{map.data(), depth, hooks};
       draw_pass<F>(scene, matrices, PassView{p.map_size, p.map_size, j, 0, p.map_size}, knobs, divide, depth.z_limit, kernel, hooks);
       hooks.pass_end(Pass::shadow_depth, j);
       lights[j].shadow_map = map.data();
@@ -107,13 +107,13 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
   }
 
   const std::uint16_t band_rows = target.band_rows == 0 ? scene.height : target.band_rows;
-  const Rgb ambient = Color::quantize(rgb(scene.ambient[0], scene.ambient[1], scene.ambient[2]));
+  const Colour ambient = Color::quantize(colour_of(scene.ambient[0], scene.ambient[1], scene.ambient[2]));
   for (std::uint16_t y0 = 0; y0 < scene.height; y0 = static_cast<std::uint16_t>(y0 + band_rows)) {
     const std::uint16_t rows = scene.height - y0 < band_rows ? static_cast<std::uint16_t>(scene.height - y0) : band_rows;
     const std::uint32_t pixels = std::uint32_t{scene.width} * rows;
     for (std::uint32_t i = 0; i < pixels; ++i) {
       target.depth[i] = static_cast<DepthT>(depth.clear);
-      Color::store(target.color.data() + i * Color::per_pixel, 0);
+      Color::store(target.color.data() + i * Color::per_pixel, black);
     }
     const PassView eye{scene.width, scene.height, -1, y0, y0 + rows};
     const BandBuffers<F.format, DepthT> band{target.color.data(), target.depth.data(), target.tie_mask.data()};

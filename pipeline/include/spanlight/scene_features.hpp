@@ -8,6 +8,12 @@
 
 namespace spanlight {
 
+// A repeating texture's size as Features::repeat_sizes holds it: (log2 width << 4) | log2 height.
+constexpr std::uint8_t repeat_size_of(const TextureLevel& level) {
+  auto log2_of = [](std::uint32_t x) { int n = 0; while ((1u << n) < x) ++n; return n; };
+  return static_cast<std::uint8_t>((log2_of(level.width) << 4) | log2_of(level.height));
+}
+
 // The least a build must compile to draw `scene` with `knobs`.
 constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
   Features f{};
@@ -17,6 +23,8 @@ constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
     if (t.filter == Filter::nearest) f.nearest = true;
     else f.bilinear = true;
   };
+  int sizes = 0;
+  f.any_repeat_size = false;
   for (std::uint16_t o = 0; o < scene.object_count; ++o) {
     const ObjectData& object = scene.objects[o];
     if (object.texture < 0) continue;
@@ -24,6 +32,13 @@ constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
     filter_of(t);
     f.clamped |= t.wrap != Wrap::repeat;
     f.tinted |= !(object.color[0] == 255 && object.color[1] == 255 && object.color[2] == 255);
+    if (t.wrap != Wrap::repeat) continue;
+    const std::uint8_t size = repeat_size_of(t.levels[0]);
+    bool known = false;
+    for (int i = 0; i < sizes; ++i) known |= f.repeat_sizes[i] == size;
+    if (known) continue;
+    if (sizes < 4) f.repeat_sizes[sizes++] = size;
+    else f.any_repeat_size = true;
   }
   for (int j = 0; j < scene.projector_count; ++j) {
     const ProjectorData& p = scene.projectors[j];
@@ -36,14 +51,22 @@ constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
   f.multipass = knobs.passes == Passes::multipass;
   f.table_bits = knobs.table_bits;
   f.newton = knobs.newton;
+  f.depth_bits = knobs.depth_bits;
   return f;
 }
 
 // Whether a build with features `built` has everything `needed` asks for.
 constexpr bool covers(const Features& built, const Features& needed) {
+  bool sizes = built.any_repeat_size || !needed.any_repeat_size;
+  for (const std::uint8_t size : needed.repeat_sizes) {
+    if (size == 0 || built.any_repeat_size) continue;
+    bool found = false;
+    for (const std::uint8_t b : built.repeat_sizes) found |= b == size;
+    sizes &= found;
+  }
   return built.max_projectors >= needed.max_projectors && (built.shadows || !needed.shadows) &&
          (built.pcf || !needed.pcf) && (built.nearest || !needed.nearest) && (built.bilinear || !needed.bilinear) &&
-         (built.clamped || !needed.clamped) && (built.tinted || !needed.tinted);
+         (built.clamped || !needed.clamped) && (built.tinted || !needed.tinted) && sizes;
 }
 
 }  // namespace spanlight

@@ -101,22 +101,28 @@ struct SegmentPlanner {
 };
 
 // The forward differences of the quadratic through f0, f0 + d1, f0 + d1 + d2 at
-// pixels 0, 2^(k-1) and 2^k (k >= 1; d1, d2 exact differences, |d| < 2^31), in
-// units 2^shift times finer (shift <= 16): q(j + 1) - q(j) = step + j * curve,
+// pixels 0, 2^(k-1) and 2^k (k >= 1; d1, d2 exact differences, |d| < 2^30), in
+// units 2^shift times finer (shift <= 20): q(j + 1) - q(j) = step + j * curve,
 // modulo 2^32 (a repeating texture's coordinate wraps as the texture does).
 struct QuadraticSteps {
   std::uint32_t step, curve;
 };
-constexpr QuadraticSteps quadratic_steps(std::int64_t d1, std::int64_t d2, int k, int shift) {
+constexpr QuadraticSteps quadratic_steps(std::int32_t d1, std::int32_t d2, int k, int shift) {
   // q(j) = f0 + j d1 / h + j (j - h) c, h = 2^(k-1), c = (d2 - d1) / 2^(2k-1):
-  // curve = 2c = (d2 - d1) / 2^(2k-2), step = d1 / h + c (1 - h) = (2^k d1 + (d2 - d1)(1 - h)) / 2^(2k-1),
-  // each scaled and then rounded to nearest: |numerators| < 2^(32 + k + shift) <= 2^54.
-  const std::int64_t dd = d2 - d1;
+  // curve = 2c = (d2 - d1) / 2^(2k-2), step = d1 / h + c (1 - h) = (2^k d1 + (d2 - d1)(1 - h)) / 2^(2k-1).
   const int s = 2 * k - 1;
-  const std::int64_t step_num = ((d1 << k) + dd * (1 - (std::int64_t{1} << (k - 1)))) * (std::int64_t{1} << shift);
-  const std::int64_t step = (step_num + (std::int64_t{1} << (s - 1))) >> s;
-  const std::int64_t curve_num = dd * (std::int64_t{1} << shift);
-  const std::int64_t curve = k == 1 ? curve_num : (curve_num + (std::int64_t{1} << (s - 2))) >> (s - 1);
+  if (shift >= s) {
+    // Enough finer units to hold both exactly: shifts left, and modulo 2^32 is the answer.
+    const auto dd = static_cast<std::uint32_t>(d2) - static_cast<std::uint32_t>(d1);
+    const std::uint32_t step_num = (static_cast<std::uint32_t>(d1) << k) + dd * (1u - (1u << (k - 1)));
+    return {step_num << (shift - s), dd << (shift - s + 1)};
+  }
+  // Else divided by 2^(s - shift), rounded to nearest, in 64 bits (|numerators| < 2^(31 + k + 1) <= 2^38).
+  const std::int64_t dd = std::int64_t{d2} - d1;
+  const std::int64_t step_num = (std::int64_t{d1} << k) + dd * (1 - (std::int64_t{1} << (k - 1)));
+  const int right = s - shift;  // >= 1
+  const std::int64_t step = (step_num + (std::int64_t{1} << (right - 1))) >> right;
+  const std::int64_t curve = right == 1 ? dd : (dd + (std::int64_t{1} << (right - 2))) >> (right - 1);
   return {static_cast<std::uint32_t>(step), static_cast<std::uint32_t>(curve)};
 }
 

@@ -113,6 +113,7 @@ enum class GroupMode : std::uint8_t { interpolated, constant, per_pixel };
 // exact point that ends the segment.
 struct GroupSpan {
   Stepped value[3];
+  int components;            // 2 for uv, 3 for a projector's s, t, r
   bool front;
   GroupMode mode;
   std::int32_t segment_end;  // the column of the next exact point (c1 + 1: none before the span ends)
@@ -127,6 +128,7 @@ struct GroupSpan {
   constexpr void start(const GroupSource<P, Divide>& src, int group, const SpanControl& c, const Weights& w0,
                        const Weights& w1, std::int32_t c0, std::int32_t c1) {
     scale = group == uv_group ? *c.uv : StepScale{{0, 0, 0}, {0, 0, 0}, c.projector_texel_bits[group]};
+    components = group == uv_group ? 2 : 3;
     GroupPoint first;
     point_from(src, group, w0, first);
     if (c0 == c1) {
@@ -191,7 +193,7 @@ struct GroupSpan {
     return static_cast<std::uint32_t>(p.value[k] + scale.offset[k]) << scale.shift[k];
   }
   constexpr void take(const GroupPoint& p) {
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < components; ++k) {
       value[k] = {scaled(p, k), 0, 0};
       exact_start[k] = p.value[k];
     }
@@ -224,10 +226,10 @@ struct GroupSpan {
     if (k == 0) return;  // one pixel: nothing steps
     GroupPoint middle;
     row.at(column + (std::int32_t{1} << (k - 1)), divide, middle);
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < components; ++c) {
       // Differences of the exact values (the start's is kept from `end` of the last plan, or the span's first point).
-      const QuadraticSteps q = quadratic_steps(std::int64_t{middle.value[c]} - exact_start[c],
-                                               std::int64_t{end.value[c]} - middle.value[c], k, scale.shift[c]);
+      const QuadraticSteps q = quadratic_steps(middle.value[c] - exact_start[c], end.value[c] - middle.value[c], k,
+                                               scale.shift[c]);
       value[c].step = q.step;
       value[c].curve = q.curve;
     }

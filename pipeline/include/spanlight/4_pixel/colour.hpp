@@ -3,21 +3,38 @@
 // to nearest, as the paper's passes do in an 8-bit framebuffer:
 //   light   = min(255, ambient + sum of each projector's light)   (quantised to the format after each add)
 //   pixel   = round(light * surface / 255)
+//
+// A colour travels as red and blue in two 16-bit lanes of one word (0x00RR00BB)
+// and green in another, the shape the texture blend leaves it in: products of
+// two 8-bit levels stay below 2^16 per lane, so red and blue are worked on together.
 #pragma once
 
 #include <cstdint>
 
+#include "fixedpoint/lanes.hpp"
 #include "spanlight/knobs.hpp"
 
 namespace spanlight {
 
-// A colour packed in one register as 0x00RRGGBB (the texel layout too).
+// A texel or colour as stored: 0x00RRGGBB.
 using Rgb = std::uint32_t;
 
-[[gnu::always_inline]] constexpr std::uint32_t red(Rgb c) { return (c >> 16) & 255u; }
-[[gnu::always_inline]] constexpr std::uint32_t green(Rgb c) { return (c >> 8) & 255u; }
-[[gnu::always_inline]] constexpr std::uint32_t blue(Rgb c) { return c & 255u; }
-[[gnu::always_inline]] constexpr Rgb rgb(std::uint32_t r, std::uint32_t g, std::uint32_t b) { return (r << 16) | (g << 8) | b; }
+struct Colour {
+  std::uint32_t rb;  // 0x00RR00BB
+  std::uint32_t g;   // 0..255
+
+  friend constexpr bool operator==(const Colour&, const Colour&) = default;
+};
+
+[[gnu::always_inline]] constexpr Colour colour_of(Rgb c) { return {c & 0x00FF00FFu, (c >> 8) & 255u}; }
+[[gnu::always_inline]] constexpr Colour colour_of(std::uint32_t r, std::uint32_t g, std::uint32_t b) {
+  return {(r << 16) | b, g};
+}
+[[gnu::always_inline]] constexpr std::uint32_t red(Colour c) { return c.rb >> 16; }
+[[gnu::always_inline]] constexpr std::uint32_t green(Colour c) { return c.g; }
+[[gnu::always_inline]] constexpr std::uint32_t blue(Colour c) { return c.rb & 255u; }
+inline constexpr Colour white{0x00FF00FFu, 255u};
+inline constexpr Colour black{0u, 0u};
 
 // round(a * b / 255) for a, b in [0, 255], exact (Blinn's trick).
 [[gnu::always_inline]] constexpr std::uint32_t mul255(std::uint32_t a, std::uint32_t b) {
@@ -26,17 +43,15 @@ using Rgb = std::uint32_t;
 }
 
 // light * surface per channel, mul255's rounding run on red and blue at once in
-// two 16-bit lanes (each lane's t = a * b + 128 < 2^16, so the lanes never meet).
-[[gnu::always_inline]] constexpr Rgb modulate(Rgb light, Rgb surface) {
-  constexpr std::uint32_t lanes = 0x00FF00FFu;
-  const std::uint32_t t = ((red(light) * red(surface) + 128u) << 16) | (blue(light) * blue(surface) + 128u);
-  const std::uint32_t rb = ((t + ((t >> 8) & lanes)) >> 8) & lanes;
-  return rb | (mul255(green(light), green(surface)) << 8);
+// their lanes (each lane's t = a * b + 128 < 2^16, so the lanes never meet).
+[[gnu::always_inline]] inline Colour modulate(Colour light, Colour surface) {
+  const std::uint32_t t = fixedpoint::lane_products(light.rb, surface.rb) + 0x00800080u;
+  return {fixedpoint::bytes_1_3(fixedpoint::add_bytes_1_3(t, t)), mul255(light.g, surface.g)};
 }
 
-[[gnu::always_inline]] constexpr Rgb add_light(Rgb base, Rgb light) {
-  auto add = [](std::uint32_t a, std::uint32_t b) { return a + b > 255u ? 255u : a + b; };
-  return rgb(add(red(base), red(light)), add(green(base), green(light)), add(blue(base), blue(light)));
+// base + light per channel, saturated at 255.
+[[gnu::always_inline]] inline Colour add_light(Colour base, Colour light) {
+  return {fixedpoint::add_bytes_saturated(base.rb, light.rb), fixedpoint::add_bytes_saturated(base.g, light.g)};
 }
 
 // ---- framebuffer formats ------------------------------------------------------
@@ -48,13 +63,13 @@ template <>
 struct ColorTraits<PixelFormat::rgb888> {
   using Storage = std::uint8_t;
   static constexpr int per_pixel = 3;  // R, G, B bytes
-  [[gnu::always_inline]] static Rgb load(const Storage* p) { return rgb(p[0], p[1], p[2]); }
-  [[gnu::always_inline]] static void store(Storage* p, Rgb c) {
-    p[0] = static_cast<std::uint8_t>(c >> 16);
-    p[1] = static_cast<std::uint8_t>(c >> 8);
-    p[2] = static_cast<std::uint8_t>(c);
+  [[gnu::always_inline]] static Colour load(const Storage* p) { return colour_of(p[0], p[1], p[2]); }
+  [[gnu::always_inline]] static void store(Storage* p, Colour c) {
+    p[0] = static_cast<std::uint8_t>(c.rb >> 16);
+    p[1] = static_cast<std::uint8_t>(c.g);
+    p[2] = static_cast<std::uint8_t>(c.rb);
   }
-  [[gnu::always_inline]] static constexpr Rgb quantize(Rgb c) { return c; }
+  [[gnu::always_inline]] static constexpr Colour quantize(Colour c) { return c; }
 };
 
 // round(c * 31 / 255) and round(c * 63 / 255) without a divide (exact for c in [0, 255]).
@@ -63,23 +78,26 @@ struct ColorTraits<PixelFormat::rgb888> {
 [[gnu::always_inline]] constexpr std::uint32_t from5(std::uint32_t c) { return (c << 3) | (c >> 2); }
 [[gnu::always_inline]] constexpr std::uint32_t from6(std::uint32_t c) { return (c << 2) | (c >> 4); }
 
-// 0x00RRGGBB to RGB565: red and blue rounded together in two 16-bit lanes
-// (255 * 249 + 1014 < 2^16, so a lane's product never reaches the next).
-[[gnu::always_inline]] constexpr std::uint32_t pack565(Rgb c) {
-  const std::uint32_t rb = (((c & 0x00FF00FFu) * 249u + 0x03F603F6u) >> 11) & 0x001F001Fu;  // R5 at 16, B5 at 0
-  return ((rb >> 5) & 0xF800u) | (to6(green(c)) << 5) | (rb & 31u);
+// To RGB565 in the low 16 bits (above them: don't care): red and blue rounded
+// together in their lanes (255 * 249 + 1014 < 2^16: a lane's product never
+// reaches the next), then red moved down beside blue and green put between.
+[[gnu::always_inline]] inline std::uint32_t pack565(Colour c) {
+  const std::uint32_t rb = (fixedpoint::opaque(249u) * c.rb + fixedpoint::opaque(0x03F603F6u)) >> 11;
+  const std::uint32_t rb5 = rb & 0x001F001Fu;  // B5 at 0, R5 at 16
+  const std::uint32_t g6 = (fixedpoint::opaque(253u) * c.g + 505u) >> 10;
+  return rb5 | (rb5 >> 5) | (g6 << 5);
 }
-[[gnu::always_inline]] constexpr Rgb unpack565(std::uint32_t p) {
-  return rgb(from5(p >> 11), from6((p >> 5) & 63u), from5(p & 31u));
+[[gnu::always_inline]] constexpr Colour unpack565(std::uint32_t p) {
+  return colour_of(from5((p >> 11) & 31u), from6((p >> 5) & 63u), from5(p & 31u));
 }
 
 template <>
 struct ColorTraits<PixelFormat::rgb565> {
   using Storage = std::uint16_t;
   static constexpr int per_pixel = 1;
-  [[gnu::always_inline]] static Rgb load(const Storage* p) { return unpack565(*p); }
-  [[gnu::always_inline]] static void store(Storage* p, Rgb c) { *p = static_cast<std::uint16_t>(pack565(c)); }
-  [[gnu::always_inline]] static constexpr Rgb quantize(Rgb c) { return unpack565(pack565(c)); }
+  [[gnu::always_inline]] static Colour load(const Storage* p) { return unpack565(*p); }
+  [[gnu::always_inline]] static void store(Storage* p, Colour c) { *p = static_cast<std::uint16_t>(pack565(c)); }
+  [[gnu::always_inline]] static Colour quantize(Colour c) { return unpack565(pack565(c) & 0xFFFFu); }
 };
 
 // RGB565 with its two bytes swapped in memory: the byte order SPI panels take.
@@ -89,9 +107,9 @@ template <>
 struct ColorTraits<PixelFormat::rgb565_be> {
   using Storage = std::uint16_t;
   static constexpr int per_pixel = 1;
-  [[gnu::always_inline]] static Rgb load(const Storage* p) { return unpack565(swap_bytes16(*p)); }
-  [[gnu::always_inline]] static void store(Storage* p, Rgb c) { *p = static_cast<std::uint16_t>(swap_bytes16(pack565(c))); }
-  [[gnu::always_inline]] static constexpr Rgb quantize(Rgb c) { return unpack565(pack565(c)); }
+  [[gnu::always_inline]] static Colour load(const Storage* p) { return unpack565(swap_bytes16(*p)); }
+  [[gnu::always_inline]] static void store(Storage* p, Colour c) { *p = static_cast<std::uint16_t>(swap_bytes16(pack565(c))); }
+  [[gnu::always_inline]] static Colour quantize(Colour c) { return unpack565(pack565(c) & 0xFFFFu); }
 };
 
 }  // namespace spanlight

@@ -9,7 +9,10 @@ namespace spanlight {
 
 constexpr std::uint32_t depth_clear(int depth_bits) { return (1u << depth_bits) - 1u; }
 
-// The stored depth's constants, worked out once per pass (depth bits are a run-time knob).
+// The stored depth's constants, worked out once per pass (depth bits are a
+// run-time knob on the host; FixedBits, a firmware's baked one, makes the
+// store a shift by a constant).
+template <int FixedBits = 0>
 struct DepthFormat {
   int shift;            // 32 - bits: Q0.32 to stored
   std::uint32_t clear;  // all ones
@@ -18,10 +21,13 @@ struct DepthFormat {
   std::uint32_t z_limit;
   constexpr explicit DepthFormat(int depth_bits)
       : shift(32 - depth_bits), clear(depth_clear(depth_bits)), z_limit(((clear - 1u) << (32 - depth_bits)) | ((1u << (32 - depth_bits)) - 1u)) {}
-  [[gnu::always_inline]] constexpr std::uint32_t store(std::uint32_t z_q32) const { return z_q32 >> shift; }
+  [[gnu::always_inline]] constexpr std::uint32_t store(std::uint32_t z_q32) const {
+    if constexpr (FixedBits != 0) return z_q32 >> (32 - FixedBits);
+    else return z_q32 >> shift;
+  }
   // The same for a depth that may lie beyond z_limit (a span evaluated per pixel).
   [[gnu::always_inline]] constexpr std::uint32_t store_clamped(std::uint32_t z_q32) const {
-    return (z_q32 > z_limit ? z_limit : z_q32) >> shift;
+    return store(z_q32 > z_limit ? z_limit : z_q32);
   }
 };
 

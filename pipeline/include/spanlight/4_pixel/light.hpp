@@ -33,13 +33,13 @@ struct Light {
 
 // The light a projector adds at a pixel inside its frustum with q > 0, before saturation.
 template <bool Bilinear, bool Shadows, bool Pcf, typename DepthT>
-[[gnu::always_inline]] inline Rgb projector_light(const Light<DepthT>& light, std::int32_t s, std::int32_t t, std::int32_t r,
+[[gnu::always_inline]] inline Colour projector_light(const Light<DepthT>& light, std::int32_t s, std::int32_t t, std::int32_t r,
                                                   int depth_bits) {
   std::uint32_t shadow = 256;  // condition 4, in 1/256
   if constexpr (Shadows) {
     if (light.shadow_map != nullptr) {
       shadow = shadow_factor<Pcf>(*light.projector, light.shadow_map, s, t, r, depth_bits);
-      if (shadow == 0) return 0;
+      if (shadow == 0) return black;
     }
   }
   const TextureLevel& level = light.image->levels[0];
@@ -54,7 +54,7 @@ template <bool Bilinear, bool Shadows, bool Pcf, typename DepthT>
     const std::uint64_t levels = (product + (std::uint64_t{1} << 31)) >> 32;
     return levels > 255u ? 255u : static_cast<std::uint32_t>(levels);
   };
-  return rgb(channel(colour[0], texel.r), channel(colour[1], texel.g), channel(colour[2], texel.b));
+  return colour_of(channel(colour[0], texel.r), channel(colour[1], texel.g), channel(colour[2], texel.b));
 }
 
 }  // namespace spanlight

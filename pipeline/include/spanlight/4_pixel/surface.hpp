@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 
 #include "spanlight/3_span/walk.hpp"
 #include "spanlight/4_pixel/colour.hpp"
@@ -20,15 +21,15 @@ enum class SurfaceKind : std::uint8_t { colour, nearest_repeat, nearest_clamp, n
 struct Surface {
   SurfaceKind kind;
   bool tinted;      // the object's colour is not white: the texel is multiplied by it
-  Rgb colour;       // the object's colour
+  Colour colour;    // the object's colour
   TexelGrid grid;
   StepScale scale;  // how the walk steps uv for this sampler
 };
 
 constexpr Surface surface_of(const ObjectData& o, const TextureData* textures) {
   Surface s{};
-  s.colour = rgb(o.color[0], o.color[1], o.color[2]);
-  s.tinted = s.colour != 0xFFFFFFu;
+  s.colour = colour_of(o.color[0], o.color[1], o.color[2]);
+  s.tinted = s.colour != white;
   if (o.texture < 0) {
     s.kind = SurfaceKind::colour;
     return s;
@@ -51,15 +52,36 @@ constexpr Surface surface_of(const ObjectData& o, const TextureData* textures) {
   return s;
 }
 
-// Calls fn(sample) with sample(x, y) -> Rgb, the surface's sampler of stepped
+// Calls fn(Sampler<log2 w, log2 h>{texels}) when the grid's size is one of
+// F.repeat_sizes, and says whether it did.
+template <Features F, template <int, int> class Sampler, typename Fn>
+[[gnu::always_inline]] inline bool with_size(const TexelGrid& g, Fn&& fn) {
+  const auto size = static_cast<std::uint8_t>(((32 - g.x_shift) << 4) | (32 - g.y_shift));
+  bool done = false;
+  [&]<std::size_t... I>(std::index_sequence<I...>) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    (([&] SPANLIGHT_LAMBDA_INLINE_ATTR {
+       constexpr std::uint8_t s = F.repeat_sizes[I];
+       if constexpr (s != 0) {
+         if (!done && size == s) {
+           fn(Sampler<(s >> 4), (s & 15)>{g.texels});
+           done = true;
+         }
+       }
+     }()),
+     ...);
+  }(std::make_index_sequence<4>{});
+  return done;
+}
+
+// Calls fn(sample) with sample(x, y) -> Colour, the surface's sampler of stepped
 // coordinates, instantiated only for the kinds features F allows.
 template <Features F, typename Fn>
 [[gnu::always_inline]] inline void with_sampler(const Surface& s, Fn&& fn) {
-  const TexelGrid& g = s.grid;
+  const TexelGrid g = s.grid;  // by value: the run loop keeps it in registers
   auto sampled = [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
     if constexpr (F.tinted) {
       if (s.tinted) {
-        const Rgb colour = s.colour;
+        const Colour colour = s.colour;
         return fn([&sample, colour](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return modulate(colour, sample(x, y)); });
       }
     }
@@ -68,26 +90,32 @@ template <Features F, typename Fn>
   auto as_signed = [](std::uint32_t x) SPANLIGHT_LAMBDA_INLINE_ATTR { return static_cast<std::int32_t>(x); };
   switch (s.kind) {
     case SurfaceKind::colour: {
-      const Rgb c = s.colour;
+      const Colour c = s.colour;
       return fn([c](std::uint32_t, std::uint32_t) SPANLIGHT_LAMBDA_INLINE_ATTR { return c; });
     }
     case SurfaceKind::bilinear_repeat:
-      if constexpr (F.bilinear) return sampled([&g](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_repeat(g, x, y); });
+      if constexpr (F.bilinear) {
+        if (with_size<F, BilinearRepeatOfSize>(g, sampled)) return;
+        if constexpr (F.any_repeat_size) return sampled([g](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_repeat(g, x, y); });
+      }
       break;
     case SurfaceKind::bilinear_clamp:
-      if constexpr (F.bilinear && F.clamped) return sampled([&g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_clamp(g, as_signed(x), as_signed(y)); });
+      if constexpr (F.bilinear && F.clamped) return sampled([g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_clamp(g, as_signed(x), as_signed(y)); });
       break;
     case SurfaceKind::bilinear_border:
-      if constexpr (F.bilinear && F.clamped) return sampled([&g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_border(g, as_signed(x), as_signed(y)); });
+      if constexpr (F.bilinear && F.clamped) return sampled([g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_border(g, as_signed(x), as_signed(y)); });
       break;
     case SurfaceKind::nearest_repeat:
-      if constexpr (F.nearest) return sampled([&g](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest_repeat(g, x, y); });
+      if constexpr (F.nearest) {
+        if (with_size<F, NearestRepeatOfSize>(g, sampled)) return;
+        if constexpr (F.any_repeat_size) return sampled([g](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest_repeat(g, x, y); });
+      }
       break;
     case SurfaceKind::nearest_clamp:
-      if constexpr (F.nearest && F.clamped) return sampled([&g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest<Wrap::clamp>(g, as_signed(x), as_signed(y)); });
+      if constexpr (F.nearest && F.clamped) return sampled([g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest<Wrap::clamp>(g, as_signed(x), as_signed(y)); });
       break;
     case SurfaceKind::nearest_border:
-      if constexpr (F.nearest && F.clamped) return sampled([&g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest<Wrap::border>(g, as_signed(x), as_signed(y)); });
+      if constexpr (F.nearest && F.clamped) return sampled([g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest<Wrap::border>(g, as_signed(x), as_signed(y)); });
       break;
   }
 }

@@ -14,6 +14,7 @@
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
+#include "fixedpoint/lanes.hpp"
 #include "spanlight/4_pixel/colour.hpp"
 #include "spanlight/scene.hpp"
 
@@ -44,7 +45,8 @@ constexpr TexelGrid texel_grid(const TextureLevel& level, int frac) {
 //   S = 256 A + B,  A = sum hi(h) w_y,  B = sum lo(h) w_y,
 //   round(S / 2^16) = (A + floor(B / 256) + 128) >> 8,
 // and A + B/256 <= S/256 <= 255 * 256, so the lanes never carry into each other.
-// Green is alone in its word: its two products need no split.
+// Green goes as a pair of lanes (its two texels of a row) through one dot
+// product with the weights, then blends vertically in one word (below 2^24).
 struct BilinearSums {
   std::uint32_t a_rb, b_rb;  // A and B above, red and blue lanes
   std::uint32_t g;           // sum g_ij w_ij, < 2^24
@@ -52,21 +54,20 @@ struct BilinearSums {
 
 [[gnu::always_inline]] inline BilinearSums bilinear_sums(std::uint32_t t00, std::uint32_t t10, std::uint32_t t01,
                                                          std::uint32_t t11, std::uint32_t fx, std::uint32_t fy) {
-  constexpr std::uint32_t lanes = 0x00FF00FFu;
+  using fixedpoint::bytes_0_2, fixedpoint::bytes_1_3;
   const std::uint32_t ifx = 256u - fx, ify = 256u - fy;
-  const std::uint32_t h_top = (t00 & lanes) * ifx + (t10 & lanes) * fx;
-  const std::uint32_t h_bottom = (t01 & lanes) * ifx + (t11 & lanes) * fx;
-  const std::uint32_t a = ((h_top >> 8) & lanes) * ify + ((h_bottom >> 8) & lanes) * fy;
-  const std::uint32_t b = (h_top & lanes) * ify + (h_bottom & lanes) * fy;
-  const std::uint32_t g_top = ((t00 >> 8) & 255u) * ifx + ((t10 >> 8) & 255u) * fx;
-  const std::uint32_t g_bottom = ((t01 >> 8) & 255u) * ifx + ((t11 >> 8) & 255u) * fx;
+  const std::uint32_t h_top = bytes_0_2(t00) * ifx + bytes_0_2(t10) * fx;
+  const std::uint32_t h_bottom = bytes_0_2(t01) * ifx + bytes_0_2(t11) * fx;
+  const std::uint32_t a = bytes_1_3(h_top) * ify + bytes_1_3(h_bottom) * fy;
+  const std::uint32_t b = bytes_0_2(h_top) * ify + bytes_0_2(h_bottom) * fy;
+  const std::uint32_t weights = ifx | (fx << 16);
+  const std::uint32_t g_top = fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t00, t10), weights);
+  const std::uint32_t g_bottom = fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t01, t11), weights);
   return {a, b, g_top * ify + g_bottom * fy};
 }
 
-[[gnu::always_inline]] inline Rgb round_sums(const BilinearSums& s) {
-  constexpr std::uint32_t lanes = 0x00FF00FFu;
-  const std::uint32_t rb = ((s.a_rb + ((s.b_rb >> 8) & lanes) + 0x00800080u) >> 8) & lanes;
-  return rb | (((s.g + 0x8000u) >> 16) << 8);
+[[gnu::always_inline]] inline Colour round_sums(const BilinearSums& s) {
+  return {fixedpoint::bytes_1_3(fixedpoint::add_bytes_1_3(s.a_rb, s.b_rb) + 0x00800080u), (s.g + 0x8000u) >> 16};
 }
 
 // Each channel's sum before rounding (8-bit level * 2^16): a projector keeps these
@@ -89,15 +90,36 @@ struct Footprint {
 }
 
 // Repeating: x0 is the top bits, the weight the next 8 (x_shift >= 20 for sizes up to 4096).
-[[gnu::always_inline]] inline Rgb bilinear_repeat(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
-  const std::uint32_t x0 = x >> g.x_shift, y0 = y >> g.y_shift;
-  const std::uint32_t fx = (x >> (g.x_shift - 8)) & 255u, fy = (y >> (g.y_shift - 8)) & 255u;
-  return round_sums(footprint_sums({g.texels + static_cast<std::int32_t>(y0) * g.stride + static_cast<std::int32_t>(x0), fx, fy}, g.stride));
+[[gnu::always_inline]] inline Colour bilinear_repeat_at(const std::uint32_t* texels, std::int32_t stride, int x_shift,
+                                                     int y_shift, std::uint32_t x, std::uint32_t y) {
+  const std::uint32_t x0 = x >> x_shift, y0 = y >> y_shift;
+  const std::uint32_t fx = (x >> (x_shift - 8)) & 255u, fy = (y >> (y_shift - 8)) & 255u;
+  return round_sums(footprint_sums({texels + static_cast<std::int32_t>(y0) * stride + static_cast<std::int32_t>(x0), fx, fy}, stride));
 }
+[[gnu::always_inline]] inline Colour bilinear_repeat(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
+  return bilinear_repeat_at(g.texels, g.stride, g.x_shift, g.y_shift, x, y);
+}
+
+// The same for a size known at compile time (Features::repeat_sizes): shifts and stride are constants.
+template <int WidthLog2, int HeightLog2>
+struct BilinearRepeatOfSize {
+  const std::uint32_t* texels;
+  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y) const {
+    return bilinear_repeat_at(texels, (std::int32_t{1} << WidthLog2) + 2 * texture_frame, 32 - WidthLog2, 32 - HeightLog2, x, y);
+  }
+};
+template <int WidthLog2, int HeightLog2>
+struct NearestRepeatOfSize {
+  const std::uint32_t* texels;
+  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y) const {
+    return colour_of(texels[static_cast<std::int32_t>(y >> (32 - HeightLog2)) * ((std::int32_t{1} << WidthLog2) + 2 * texture_frame) +
+                  static_cast<std::int32_t>(x >> (32 - WidthLog2))]);
+  }
+};
 
 // Clamp to edge: beyond the centres of the outer texels the edge texel alone
 // (x0 in [0, width - 1]; the frame holds column `width` for the zero weight).
-[[gnu::always_inline]] inline Rgb bilinear_clamp(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+[[gnu::always_inline]] inline Colour bilinear_clamp(const TexelGrid& g, std::int32_t x, std::int32_t y) {
   const std::int32_t x_max = (g.width - 1) << g.frac, y_max = (g.height - 1) << g.frac;
   x = x < 0 ? 0 : (x > x_max ? x_max : x);
   y = y < 0 ? 0 : (y > y_max ? y_max : y);
@@ -109,7 +131,7 @@ struct Footprint {
 
 // Border on an object's texture, where the coordinate may lie anywhere: texels
 // outside the image are black. Out of line: rare, and bulky inlined.
-[[gnu::noinline]] inline Rgb bilinear_border(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+[[gnu::noinline]] inline Colour bilinear_border(const TexelGrid& g, std::int32_t x, std::int32_t y) {
   const std::int32_t x0 = x >> g.frac, y0 = y >> g.frac;
   auto at = [&](std::int32_t xi, std::int32_t yi) -> std::uint32_t {
     return xi < 0 || yi < 0 || xi >= g.width || yi >= g.height ? 0u : g.texels[yi * g.stride + xi];
@@ -122,20 +144,20 @@ struct Footprint {
 
 // ---- nearest ------------------------------------------------------------------
 
-[[gnu::always_inline]] inline Rgb nearest_repeat(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
-  return g.texels[static_cast<std::int32_t>(y >> g.y_shift) * g.stride + static_cast<std::int32_t>(x >> g.x_shift)];
+[[gnu::always_inline]] inline Colour nearest_repeat(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
+  return colour_of(g.texels[static_cast<std::int32_t>(y >> g.y_shift) * g.stride + static_cast<std::int32_t>(x >> g.x_shift)]);
 }
 
 template <Wrap W>
-[[gnu::always_inline]] inline Rgb nearest(const TexelGrid& g, std::int32_t u, std::int32_t v) {
+[[gnu::always_inline]] inline Colour nearest(const TexelGrid& g, std::int32_t u, std::int32_t v) {
   std::int32_t x = u >> g.frac, y = v >> g.frac;
   if constexpr (W == Wrap::clamp) {
     x = x < 0 ? 0 : (x >= g.width ? g.width - 1 : x);
     y = y < 0 ? 0 : (y >= g.height ? g.height - 1 : y);
   } else {
-    if (x < 0 || y < 0 || x >= g.width || y >= g.height) return 0;
+    if (x < 0 || y < 0 || x >= g.width || y >= g.height) return black;
   }
-  return g.texels[y * g.stride + x];
+  return colour_of(g.texels[y * g.stride + x]);
 }
 
 // ---- a projector's image --------------------------------------------------------
@@ -150,7 +172,7 @@ template <Wrap W>
     return unrounded(footprint_sums({level.texels + (y >> 8) * level.stride + (x >> 8), static_cast<std::uint32_t>(x) & 255u,
                                      static_cast<std::uint32_t>(y) & 255u}, level.stride));
   }
-  const Rgb c = nearest<Wrap::border>(texel_grid(level, 8), x8, y8);
+  const Colour c = nearest<Wrap::border>(texel_grid(level, 8), x8, y8);
   return {red(c) << 16, green(c) << 16, blue(c) << 16};
 }
 

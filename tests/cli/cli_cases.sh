@@ -149,8 +149,9 @@ render_every_knob)
   # of the scene's size; nothing else is left in the folder.
   i=0
   for knobs in "--span 1" "--span 64" "--table-bits 6" "--table-bits 12" "--newton 0" "--newton 2" \
-      "--depth-bits 16" "--format rgb565" "--fused" "--tolerance 0" "--tolerance 10" \
-      "--span 4 --table-bits 10 --newton 2 --depth-bits 16 --format rgb565 --fused --tolerance 5"; do
+      "--depth-bits 16" "--format rgb565" "--format rgb565-be" "--passes multipass" "--passes fused" \
+      "--tolerance 0" "--tolerance 10" \
+      "--span 4 --table-bits 10 --newton 2 --depth-bits 16 --format rgb565 --passes multipass --tolerance 5"; do
     i=$((i + 1))
     # shellcheck disable=SC2086  # the knobs are meant to split
     run_spanlight render "$good_scene" --backend fixed --out "$scratch/knobs_$i.png" $knobs

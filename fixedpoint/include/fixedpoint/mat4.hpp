@@ -141,8 +141,9 @@ constexpr Mat4 operator*(const Mat4& a, const Mat4& b) {
     for (int row = 0; row < 4; ++row) {
       std::int64_t sum = 0;
       for (int k = 0; k < 4; ++k) {
-        if (bc[k] == 0) continue;
-        sum += detail::rescale_right(mul_s32(a.m[k * 4 + row], bc[k]), a.frac_bits[k] - coarsest);
+        const std::int32_t ak = a.m[k * 4 + row];
+        if (ak == 0 || bc[k] == 0) continue;  // P and B are mostly zeros
+        sum += detail::rescale_right(mul_s32(ak, bc[k]), a.frac_bits[k] - coarsest);
       }
       product[col * 4 + row] = {sum, coarsest + b.frac_bits[col]};  // |sum| < 4 * 2^58
     }

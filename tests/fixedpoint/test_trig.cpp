@@ -84,6 +84,9 @@ TEST_CASE("degrees convert to Turns rounded to nearest and wrapped, and back exa
   REQUIRE(fixedpoint::turns_from_degrees(360).raw == 0);
   REQUIRE(fixedpoint::turns_from_degrees(720 + 180).raw == 1u << 31);
   REQUIRE(fixedpoint::degrees(Turns{1u << 29}) == 45.0);
+  REQUIRE(fixedpoint::turns_from_degrees(1000 * 360 + 90).raw == 1u << 30);
+  REQUIRE(fixedpoint::turns_from_degrees(1e300).raw == 0);
+  REQUIRE(fixedpoint::turns_from_degrees(std::nan("")).raw == 0);
   std::mt19937_64 rng(20240626);
   for (int i = 0; i < 100000; ++i) {
     const Turns t{static_cast<std::uint32_t>(rng())};

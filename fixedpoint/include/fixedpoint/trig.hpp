@@ -31,8 +31,9 @@ struct Turns {
 inline constexpr double turns_raw_per_degree = 4294967296.0 / 360.0;
 
 // Host side, or constant expressions on the target (a run-time call would need floating point).
-// Rounded to nearest; any angle, wrapped into [0, 1) turn.
+// Rounded to nearest and wrapped into [0, 1) turn, for |degrees| < 1e15; NaN and larger give 0.
 constexpr Turns turns_from_degrees(double degrees) {
+  if (!(degrees > -1e15 && degrees < 1e15)) return {0};  // keeps the conversion to int64 below defined
   double raw = degrees * turns_raw_per_degree;
   const double turn = 4294967296.0;
   raw -= static_cast<double>(static_cast<std::int64_t>(raw / turn)) * turn;  // now in (-2^32, 2^32)

@@ -45,7 +45,7 @@ add_subdirectory(${CMAKE_SOURCE_DIR}/tools/qemu_icount ${CMAKE_BINARY_DIR}/tools
 get_property(spanlight_firmware_host_depends GLOBAL PROPERTY SPANLIGHT_FIRMWARE_HOST_DEPENDS)
 foreach(cpu IN LISTS SPANLIGHT_FIRMWARE_CPUS)
   set(byproducts)
-  set(apps selftest icount_calibration fault_check)
+  set(apps selftest icount_calibration fault_check pose_bench)
   foreach(entry IN LISTS SPANLIGHT_BAKED_SCENES)
     spanlight_baked_scene_fields("${entry}" name file options)
     list(APPEND apps render_${name})

@@ -12,13 +12,13 @@
 namespace spanlight::scene::detail {
 namespace {
 
-std::string read_text(const std::filesystem::path& file) {
-  require_regular_file(file, root_field_name, "scene file");
+std::string read_text(const std::filesystem::path& file, std::string_view kind) {
+  require_regular_file(file, root_field_name, kind);
   std::ifstream in(file, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
   if (!in || !text) {
-    throw SceneError(file.string(), std::string(root_field_name), "expected a readable scene file, got a read error");
+    throw SceneError(file.string(), std::string(root_field_name), "expected a readable " + std::string(kind) + ", got a read error");
   }
   return text.str();
 }
@@ -32,8 +32,8 @@ std::string without_exception_id(const std::string& message) {
 
 }  // namespace
 
-Json read_json_document(const std::filesystem::path& file) {
-  const std::string text = read_text(file);
+Json read_json_document(const std::filesystem::path& file, std::string_view kind) {
+  const std::string text = read_text(file, kind);
   JsonPathTracker tracker;
   const auto follow_parser = [&](int /*depth*/, Json::parse_event_t event, Json& parsed) {
     switch (event) {

@@ -2,8 +2,18 @@
 // header builds freestanding with -fno-exceptions -fno-rtti and -Werror, and
 // the templates are instantiated, at run time and in constant expressions.
 #include "fixedpoint/bits.hpp"
+#include "fixedpoint/divide.hpp"
+#include "fixedpoint/isqrt.hpp"
+#include "fixedpoint/look_at.hpp"
+#include "fixedpoint/magnitude32.hpp"
+#include "fixedpoint/mat4.hpp"
+#include "fixedpoint/normalize.hpp"
+#include "fixedpoint/perspective.hpp"
+#include "fixedpoint/pose_at_frame.hpp"
+#include "fixedpoint/pose_status.hpp"
 #include "fixedpoint/q.hpp"
 #include "fixedpoint/reciprocal.hpp"
+#include "fixedpoint/trig.hpp"
 #include "fixedpoint/vec.hpp"
 
 namespace {
@@ -21,6 +31,15 @@ constexpr fixedpoint::Mat4Block block = fixedpoint::mat4_block_from_doubles(rota
 static_assert(fixedpoint::transform(block, fixedpoint::vec3_q16(1, 0, 0)).y == std::int64_t{4} << 32);
 
 static_assert((q<31, 32, std::int64_t>::from_int(3) / q<31, 32, std::int64_t>::from_int(4)).raw() == std::int64_t{3} << 30);
+
+// The pose builders in constant expressions: the compiler evaluates them for the target.
+static_assert(fixedpoint::div_mod(1000003, 7).quotient == 142857 && fixedpoint::div_mod(1000003, 7).remainder == 4);
+static_assert(fixedpoint::isqrt(1u << 20).floor == 1024);
+static_assert(fixedpoint::sin_cos(fixedpoint::Turns{1u << 30}).sin == 1 << 30);
+constexpr fixedpoint::View front = fixedpoint::look_at({0, 0, 0}, {0, 0, -65536}, {0, 65536, 0});
+static_assert(front.status == fixedpoint::PoseStatus::ok && front.f.z == -(1 << 30) && front.s.x == 1 << 30);
+static_assert(fixedpoint::perspective(fixedpoint::Turns{1u << 30}, {1, 1}, q<15, 16>::from_int(1), q<15, 16>::from_int(3)).m[5] ==
+              1 << 28);  // cot(45 degrees) = 1 at frac_bits 28
 
 }  // namespace
 

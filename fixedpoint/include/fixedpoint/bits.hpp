@@ -104,6 +104,13 @@ constexpr std::uint32_t high_word_shifted_left(std::uint64_t x, int n) {
   return n >= 32 ? lo << (n - 32) : (hi << n) | ((lo >> 1) >> (31 - n));
 }
 
+// x / 2^s rounded to nearest, ties away from zero (so it is odd in x), for
+// 1 <= s <= 62 and |x| < 2^62 (the rounding half cannot overflow).
+constexpr std::int64_t shift_right_rounded(std::int64_t x, int s) {
+  const std::int64_t half = std::int64_t{1} << (s - 1);
+  return x >= 0 ? (x + half) >> s : -((half - x) >> s);
+}
+
 // Clamp an int64 into int32 range: saturation, never wrap.
 constexpr std::int32_t saturate32(std::int64_t x) {
   return x > INT32_MAX ? INT32_MAX : (x < INT32_MIN ? INT32_MIN : static_cast<std::int32_t>(x));

@@ -18,6 +18,9 @@ namespace fixedpoint {
 
 inline constexpr std::int32_t mat4_block_entry_limit = std::int32_t{1} << 29;  // |m[i]| < this
 inline constexpr int mat4_block_max_frac_bits = 60;
+// What the pipeline accepts: below 16 fraction bits an entry may be >= 2^13 and
+// transform()'s Q31.32 result could saturate (see transform below).
+inline constexpr int mat4_block_pipeline_min_frac_bits = 16;
 
 struct Mat4Block {
   std::int32_t m[16];  // column-major: m[col * 4 + row]

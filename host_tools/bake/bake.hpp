@@ -17,6 +17,13 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
                                 const std::string& scene_name);
 std::string baked_scene_source(const prepare::PreparedStorage& prepared, const std::string& scene_name);
 
+// The two files a bake writes into out_dir.
+struct BakedFiles {
+  std::filesystem::path scene;   // baked_scene.cpp
+  std::filesystem::path config;  // baked_config.hpp
+};
+BakedFiles baked_files(const std::filesystem::path& out_dir);
+
 // Writes both into `out_dir` (created if missing), each through a temporary
 // file and a rename. Throws std::runtime_error naming the file on failure.
 void write_baked_scene(const prepare::PreparedStorage& prepared, const Knobs& knobs, const std::string& scene_name,

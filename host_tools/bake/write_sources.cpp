@@ -5,6 +5,7 @@
 
 #include "bake/bake.hpp"
 #include "spanlight/scene_features.hpp"
+#include "bake/write_atomically.hpp"
 
 namespace spanlight::bake {
 namespace {
@@ -43,20 +44,6 @@ void write_matrices(std::ostream& out, const char* name, const std::vector<Mat4B
   }
   if (mats.empty()) out << "{}";
   out << "\n};\n";
-}
-
-void write_atomically(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path temp = file.string() + ".partial";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out.flush()) {
-      std::error_code ignored;
-      std::filesystem::remove(temp, ignored);
-      throw std::runtime_error(file.string() + ": cannot write");
-    }
-  }
-  std::filesystem::rename(temp, file);
 }
 
 }  // namespace
@@ -174,8 +161,13 @@ void write_baked_scene(const prepare::PreparedStorage& prepared, const Knobs& kn
   std::error_code error;
   std::filesystem::create_directories(out_dir, error);
   if (error) throw std::runtime_error(out_dir.string() + ": cannot create: " + error.message());
-  write_atomically(out_dir / "baked_config.hpp", baked_config_source(prepared, knobs, scene_name));
-  write_atomically(out_dir / "baked_scene.cpp", baked_scene_source(prepared, scene_name));
+  const BakedFiles files = baked_files(out_dir);
+  write_atomically(files.config, baked_config_source(prepared, knobs, scene_name));
+  write_atomically(files.scene, baked_scene_source(prepared, scene_name));
+}
+
+BakedFiles baked_files(const std::filesystem::path& out_dir) {
+  return {out_dir / "baked_scene.cpp", out_dir / "baked_config.hpp"};
 }
 
 }  // namespace spanlight::bake

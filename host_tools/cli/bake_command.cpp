@@ -1,8 +1,13 @@
-// spanlight bake SCENE.json --out DIR [knobs]: C++ sources for a firmware build.
+// spanlight bake SCENE.json --out DIR [--depfile FILE] [knobs]: C++ sources for a firmware build.
 #include <cstdio>
+#include <filesystem>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "bake/bake.hpp"
+#include "bake/depfile.hpp"
+#include "bake/write_atomically.hpp"
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"
 #include "cli/load.hpp"
@@ -14,6 +19,7 @@ namespace {
 struct BakeArgs {
   std::string scene;
   std::string out;
+  std::string depfile;  // where to list the files the bake read, for the build that runs it
   Knobs knobs;
 };
 
@@ -22,8 +28,25 @@ int run_bake(const BakeArgs& a) {
   if (!scene) return exit_bad_input;
   const auto prepared = prepare_or_report(*scene);
   if (!prepared) return exit_bad_input;
+  std::string depfile_text;  // made before anything is written: a bad name leaves no output
+  if (!a.depfile.empty()) {
+    const std::vector<std::filesystem::path> inputs = bake::files_read(*scene);
+    const bake::BakedFiles outputs = bake::baked_files(a.out);
+    const std::string refusal = bake::depfile_refusal(a.depfile, inputs, {outputs.scene, outputs.config});
+    if (!refusal.empty()) {
+      std::fprintf(stderr, "%s: --depfile: %s\n", a.depfile.c_str(), refusal.c_str());
+      return exit_bad_input;
+    }
+    try {
+      depfile_text = bake::depfile_text({outputs.scene, outputs.config}, inputs);
+    } catch (const std::invalid_argument& e) {
+      std::fprintf(stderr, "%s\n", e.what());
+      return exit_bad_input;
+    }
+  }
   try {
     bake::write_baked_scene(*prepared, a.knobs, scene->name, a.out);
+    if (!a.depfile.empty()) bake::write_atomically(a.depfile, depfile_text);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "%s\n", e.what());
     return exit_bad_input;
@@ -42,6 +65,9 @@ Command add_bake_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("bake", "write a scene as C++ sources (baked_scene.cpp, baked_config.hpp) for firmware");
   cmd->add_option("scene", args->scene, "scene file")->required();
   cmd->add_option("--out", args->out, "output folder")->required();
+  cmd->add_option("--depfile", args->depfile,
+                  "also write FILE: a Makefile-syntax rule naming the scene and every file it read, for the build")
+      ->type_name("FILE");
   add_knob_options(*cmd, args->knobs);
   return [args] { return run_bake(*args); };
 }

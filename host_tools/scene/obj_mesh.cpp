@@ -107,7 +107,9 @@ Mesh load_obj_mesh(const std::filesystem::path& obj_file, const std::string& fie
       first_corner += corner_count;
     }
   }
-  return builder.take();
+  Mesh loaded = builder.take();
+  loaded.file = obj_file;
+  return loaded;
 }
 
 }  // namespace spanlight::scene::detail

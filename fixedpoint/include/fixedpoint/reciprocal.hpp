@@ -36,15 +36,15 @@ struct Reciprocal {
 template <int TableBits>
 struct ReciprocalTable {
   static_assert(TableBits >= 1 && TableBits <= 14, "table of 2..16384 entries");
-  static constexpr int size = 1 << TableBits;
+  static constexpr std::size_t size = std::size_t{1} << TableBits;
   std::array<std::uint16_t, size> entry{};
 
   constexpr ReciprocalTable() {
-    for (int i = 0; i < size; ++i) {
+    for (std::size_t i = 0; i < size; ++i) {
       // 2^16 / (1 + (i + 0.5)/2^B) = 2^(17+B) / (2^(B+1) + 2i + 1), rounded to nearest.
       const std::uint64_t num = std::uint64_t{1} << (17 + TableBits);
-      const std::uint64_t den = (std::uint64_t{1} << (TableBits + 1)) + 2u * static_cast<std::uint64_t>(i) + 1u;
-      entry[static_cast<std::size_t>(i)] = static_cast<std::uint16_t>((num + den / 2) / den);
+      const std::uint64_t den = (std::uint64_t{1} << (TableBits + 1)) + 2u * std::uint64_t{i} + 1u;
+      entry[i] = static_cast<std::uint16_t>((num + den / 2) / den);
     }
   }
 };

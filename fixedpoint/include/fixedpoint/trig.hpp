@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
@@ -56,14 +57,15 @@ inline constexpr double sin_over_z_kernel_error = 1.1e-11;  // 2^-36.6 + 2^-56
 inline constexpr double cos_kernel_error = 4.0e-13;         // 2^-41.2 + 2^-56
 
 // round(2^60 / n!) with alternating signs, highest power first (Horner order).
-template <int Terms>
+template <std::size_t Terms>
 constexpr std::array<std::int64_t, Terms> taylor_q60(int first_factorial) {
   std::array<std::int64_t, Terms> c{};
-  for (int k = 0; k < Terms; ++k) {
+  for (std::size_t k = 0; k < Terms; ++k) {
+    const int n = first_factorial + 2 * static_cast<int>(k);
     std::uint64_t factorial = 1;
-    for (int i = 2; i <= first_factorial + 2 * k; ++i) factorial *= static_cast<std::uint64_t>(i);  // 14! < 2^37
+    for (int i = 2; i <= n; ++i) factorial *= static_cast<std::uint64_t>(i);  // 14! < 2^37
     const std::uint64_t magnitude = ((std::uint64_t{1} << poly_frac_bits) + factorial / 2) / factorial;
-    c[static_cast<std::size_t>(Terms - 1 - k)] = (k % 2 == 0) ? static_cast<std::int64_t>(magnitude) : -static_cast<std::int64_t>(magnitude);
+    c[Terms - 1 - k] = (k % 2 == 0) ? static_cast<std::int64_t>(magnitude) : -static_cast<std::int64_t>(magnitude);
   }
   return c;
 }

@@ -1,5 +1,5 @@
 # Firmware from the host build: one cross-compiled build tree per CPU, configured from this same
-# source tree with firmware/cmake/arm-none-eabi.cmake, plus the QEMU instruction-count plugin.
+# source tree with hal/cortex_m/arm-none-eabi.cmake, plus the QEMU instruction-count plugin.
 #   build/firmware-<cpu>/bin/<app>.elf|.bin|.map     for cpu in SPANLIGHT_FIRMWARE_CPUS
 #   build/tools/qemu_icount/libspanlight_icount.so  (target spanlight_icount)
 # Included by the root CMakeLists (host builds only) and by tests/firmware, whichever comes
@@ -59,7 +59,7 @@ foreach(cpu IN LISTS SPANLIGHT_FIRMWARE_CPUS)
     BINARY_DIR ${CMAKE_BINARY_DIR}/firmware-${cpu}
     PREFIX ${CMAKE_BINARY_DIR}/firmware-${cpu}-ep
     CMAKE_ARGS
-      -DCMAKE_TOOLCHAIN_FILE=${CMAKE_SOURCE_DIR}/firmware/cmake/arm-none-eabi.cmake
+      -DCMAKE_TOOLCHAIN_FILE=${CMAKE_SOURCE_DIR}/hal/cortex_m/arm-none-eabi.cmake
       -DSPANLIGHT_CPU=${cpu}
       -DCMAKE_BUILD_TYPE=${SPANLIGHT_FIRMWARE_BUILD_TYPE}
       -DSPANLIGHT_HOST_BINARY_DIR=${CMAKE_BINARY_DIR}

@@ -1,8 +1,8 @@
 # spanlight_add_firmware_app(NAME name SOURCES src... [LIBS lib...] [DEFINITIONS def...]
 #                            [INCLUDE_DIRS dir...] [STACK_SIZE bytes] [HOST_VARIANT])
 #
-# Cross build (toolchain firmware/cmake/arm-none-eabi.cmake):
-#   bin/<name>.elf   linked with spanlight_hal_cortex_m, the startup and firmware/ld/mps2.ld
+# Cross build (toolchain hal/cortex_m/arm-none-eabi.cmake):
+#   bin/<name>.elf   linked with spanlight_hal_cortex_m and spanlight_startup (with mps2.ld)
 #   bin/<name>.bin   the flash image (objcopy -O binary)
 #   bin/<name>.map   the linker map; arm-none-eabi-size prints the sizes after each link
 #   run-<name>       runs the ELF in QEMU (tools/qemu_icount/run_on_qemu.sh) in <build>/run,
@@ -40,7 +40,7 @@ macro(_spanlight_add_firmware_elf)
   set(out_dir ${CMAKE_BINARY_DIR}/bin)
   add_executable(${APP_NAME} ${APP_SOURCES})
   # spanlight_startup is an OBJECT library: linking it here puts the vector table and the
-  # runtime stubs into this executable directly.
+  # runtime stubs into this executable directly, and links with its linker script.
   target_link_libraries(${APP_NAME} PRIVATE ${APP_LIBS} spanlight_hal_cortex_m spanlight_startup)
   target_compile_definitions(${APP_NAME} PRIVATE ${APP_DEFINITIONS})
   target_include_directories(${APP_NAME} PRIVATE ${APP_INCLUDE_DIRS})
@@ -48,10 +48,7 @@ macro(_spanlight_add_firmware_elf)
   if(APP_STACK_SIZE)
     target_link_options(${APP_NAME} PRIVATE -Wl,--defsym=__stack_size=${APP_STACK_SIZE})
   endif()
-  set_target_properties(${APP_NAME} PROPERTIES
-    SUFFIX .elf
-    RUNTIME_OUTPUT_DIRECTORY ${out_dir}
-    LINK_DEPENDS ${SPANLIGHT_LINKER_SCRIPT})
+  set_target_properties(${APP_NAME} PROPERTIES SUFFIX .elf RUNTIME_OUTPUT_DIRECTORY ${out_dir})
   spanlight_warnings(${APP_NAME})
 
   set(size_command)

@@ -1,4 +1,4 @@
-/* Addresses defined by firmware/ld/mps2.ld. Declared as arrays so their address is the value. */
+/* Addresses defined by the linker script (hal/cortex_m/mps2/mps2.ld). Declared as arrays so their address is the value. */
 #ifndef SPANLIGHT_STARTUP_LINKER_SYMBOLS_H
 #define SPANLIGHT_STARTUP_LINKER_SYMBOLS_H
 

@@ -1,6 +1,8 @@
-# Toolchain file for the spanlight firmware: arm-none-eabi GCC, bare metal, one CPU per build tree.
-#   cmake -S . -B build-fw-m7 -G Ninja -DCMAKE_TOOLCHAIN_FILE=firmware/cmake/arm-none-eabi.cmake -DSPANLIGHT_CPU=cortex-m7
+# Toolchain file for Cortex-M firmware: arm-none-eabi GCC, bare metal, one CPU per build tree.
+#   cmake -S . -B build-fw-m7 -G Ninja -DCMAKE_TOOLCHAIN_FILE=hal/cortex_m/arm-none-eabi.cmake -DSPANLIGHT_CPU=cortex-m7
 # SPANLIGHT_CPU picks the core flags; the host build (cmake/FirmwareTargets.cmake) makes one tree per CPU.
+# Installed with the CMake package (share/cmake/spanlight/arm-none-eabi.cmake) for firmware projects
+# of any M7, M4 or M0+ part: it sets compiler and flags only; start-up and linker script are the project's.
 set(CMAKE_SYSTEM_NAME Generic)
 set(CMAKE_SYSTEM_PROCESSOR arm)
 
@@ -42,7 +44,7 @@ set(CMAKE_C_FLAGS_INIT "${spanlight_common}")
 # and the guards would pull in __cxa_guard_*.
 set(CMAKE_CXX_FLAGS_INIT "${spanlight_common} -fno-exceptions -fno-rtti -fno-threadsafe-statics")
 set(CMAKE_ASM_FLAGS_INIT "-mthumb ${spanlight_cpu_flags}")
-# -nostartfiles: our startup (firmware/startup) replaces newlib's crt0, which would call
+# -nostartfiles: the project's start-up (here hal/cortex_m/startup) replaces newlib's crt0, which would call
 # its own init/exit path. No --specs: nothing links newlib's syscalls, so anything that
 # needs _sbrk/_write (malloc, printf) fails to link instead of growing a heap.
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-nostartfiles -Wl,--gc-sections")

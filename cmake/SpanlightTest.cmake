@@ -3,6 +3,7 @@
 # registers both with CTest, one ctest entry per Catch2 test case, plus a check
 # that no test case name holds a ';' (cmake/CheckTestNames.cmake).
 include(Catch)
+include(Sanitizers)
 
 function(spanlight_add_test)
   cmake_parse_arguments(T "" "NAME" "SOURCES;LIBS;ASAN_LIBS" ${ARGN})
@@ -33,13 +34,3 @@ function(spanlight_add_test)
                        ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;UBSAN_OPTIONS=print_stacktrace=1")
 endfunction()
 
-# spanlight_add_library_with_asan(name TYPE sources...): a static library plus
-# name_asan, the same sources built with the sanitizers, for the test twins.
-function(spanlight_add_library_with_asan name)
-  add_library(${name} STATIC ${ARGN})
-  add_library(${name}_asan STATIC ${ARGN})
-  target_compile_options(${name}_asan PRIVATE ${SPANLIGHT_SANITIZE_FLAGS} -O1)
-  target_link_options(${name}_asan INTERFACE ${SPANLIGHT_SANITIZE_FLAGS})
-  spanlight_warnings(${name})
-  spanlight_warnings(${name}_asan)
-endfunction()

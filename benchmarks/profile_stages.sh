@@ -6,15 +6,15 @@
 # clip, project, setup, perspective, span, sample, shade, shadow, passes), so the table reads
 # as "share of the frame per stage". Proportions only: x86-64 is not Cortex-M; QEMU counts
 # (spanlight sweep, per pass) are the figures of record.
-#   profile_stages.sh BUILD_DIR SCENE [WORK_DIR]     (BUILD_DIR/baked/SCENE from the host build)
+#   profile_stages.sh BUILD_DIR SCENE [WORK_DIR]     (the host build's bake of render_SCENE_host)
 set -euo pipefail
 
 build=$1
 scene=$2
 work=${3:-$(mktemp -d)}
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
-baked=$build/baked/$scene
-[ -f "$baked/baked_scene.cpp" ] || { echo "profile_stages: $baked/baked_scene.cpp is missing (build target baked_scenes)" >&2; exit 2; }
+baked=$build/firmware/apps/render_baked/spanlight_baked/render_${scene}_host
+[ -f "$baked/baked_scene.cpp" ] || { echo "profile_stages: $baked/baked_scene.cpp is missing (build target render_${scene}_host)" >&2; exit 2; }
 command -v valgrind >/dev/null || { echo "profile_stages: valgrind is not installed" >&2; exit 2; }
 
 mkdir -p "$work"

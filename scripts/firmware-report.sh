@@ -31,8 +31,9 @@ echo "reserve; stack peak is the painted-stack high-water mark."
 echo
 echo "| scene | target | instructions/frame | covered px | per covered px | flash | pipeline flash | RAM (.data+.bss) | stack peak |"
 echo "|---|---|---:|---:|---:|---:|---:|---:|---:|"
-for dir in "$build"/baked/*/; do
-  scene=$(basename "$dir")
+for app in "$build"/firmware-cortex-m7/bin/render_*.elf; do
+  scene=$(basename "$app" .elf)
+  scene=${scene#render_}
   for cpu in $cpus; do
     elf=$build/firmware-$cpu/bin/render_$scene.elf
     [ -f "$elf" ] || continue

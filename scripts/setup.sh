@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Installs whatever scripts/packages.txt lists and the machine lacks, then
-# configures and builds everything (host tools, tests, firmware) into build/.
+# Installs whatever scripts/packages.txt lists and the machine lacks, then configures build/
+# (everything on: host tools, tests, firmware). The callers build what they need from it:
+# run-main.sh the CLI, run-tests.sh everything.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -17,4 +18,3 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release ${SPANLIGHT_CMAKE_ARGS:-}
-cmake --build build -j"$(nproc)"

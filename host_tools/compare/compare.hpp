@@ -2,8 +2,9 @@
 // The arithmetic is OpenImageIO's (ImageBufAlgo::compare, absdiff, maxchan,
 // color_range_check, color_map); this module only fixes the definitions:
 //
-//   LSB             one 8-bit level (1/255). Images are compared as 8-bit RGB:
-//                   grey files are expanded to RGB, alpha is dropped.
+//   LSB             one 8-bit level (1/255). Images are compared as 8-bit RGB
+//                   (io::read_rgb8_image: grey expanded, alpha dropped, at most
+//                   4096 texels a side).
 //   psnr_db         20 * log10(1 / rms), rms over all pixels and all three
 //                   channels in [0, 1] units (peak 255 LSB). +inf when the images
 //                   are identical: "inf" in text, null in JSON.

@@ -2,27 +2,17 @@
 
 #include <string>
 
-#include <OpenImageIO/imagebufalgo.h>
+#include "io/image_file.hpp"
 
 namespace spanlight::compare {
 
 OIIO::ImageBuf read_rgb(const std::filesystem::path& file) {
-  OIIO::ImageBuf image(file.string());
-  if (!image.read(0, 0, true, OIIO::TypeDesc::UINT8)) {
-    throw CompareError("cannot read " + file.string() + ": " + image.geterror());
+  try {
+    const io::Rgb8Image image = io::read_rgb8_image(file, "image file");
+    return to_image_buf({image.width, image.height, image.rgb});
+  } catch (const io::ReadError& e) {
+    throw CompareError(e.what());
   }
-  const int channels = image.nchannels();
-  if (channels == 3) return image;
-  // Grey: the one channel three times; RGBA (or more): the first three.
-  const int order_grey[3] = {0, 0, 0};
-  const int order_rgb[3] = {0, 1, 2};
-  if (channels != 1 && channels < 3) {
-    throw CompareError(file.string() + ": expected a grey, RGB or RGBA image, found " + std::to_string(channels) +
-                       " channels");
-  }
-  OIIO::ImageBuf rgb = OIIO::ImageBufAlgo::channels(image, 3, channels == 1 ? order_grey : order_rgb);
-  if (rgb.has_error()) throw CompareError(file.string() + ": " + rgb.geterror());
-  return rgb;
 }
 
 OIIO::ImageBuf to_image_buf(Rgb8View view) {

@@ -9,7 +9,8 @@
 
 namespace spanlight::compare {
 
-// Reads a file as RGB (grey expanded, alpha dropped). Throws CompareError.
+// Reads a file as RGB through io::read_rgb8_image (grey expanded, alpha dropped,
+// at most 4096 texels a side, header checked first). Throws CompareError naming the file.
 OIIO::ImageBuf read_rgb(const std::filesystem::path& file);
 
 // Copies an in-memory RGB8 image into an ImageBuf. Throws CompareError on a bad length.

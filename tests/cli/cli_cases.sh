@@ -14,7 +14,8 @@ source "$(dirname "$0")/cli_lib.sh"
 
 good_scene="$source_dir/scenes/horizon.json"
 small_png="$source_dir/tests/scene/bad/assets/npot_3x3.png"    # 3 x 3 RGB
-wide_png="$source_dir/tests/scene/bad/assets/wide_4097x1.png"  # 4097 x 1 grey
+other_png="$source_dir/scenes/assets/textures/checker.png"     # 64 x 64 RGB
+wide_png="$source_dir/tests/scene/bad/assets/wide_4097x1.png"  # 4097 x 1 grey: beyond the 4096 limit
 
 # render GOOD_SCENE with extra arguments that must be refused: exit 2, stderr
 # names WHAT, no output written, and an existing output left as it was.
@@ -195,20 +196,24 @@ compare_not_an_image)
   expect_stderr_has "corrupt.png"
   ;;
 compare_different_sizes)
-  run_spanlight compare "$small_png" "$wide_png"
+  run_spanlight compare "$small_png" "$other_png"
   expect_status 2
   expect_stderr_has "differ in size"
   # The rule: a message naming the file(s).
   expect_stderr_has "npot_3x3.png"
-  expect_stderr_has "wide_4097x1.png"
-  run_spanlight compare "$small_png" "$wide_png" --diff "$scratch/heat.png"
+  expect_stderr_has "checker.png"
+  run_spanlight compare "$small_png" "$other_png" --diff "$scratch/heat.png"
   expect_status 2
   expect_only_files "$scratch"
   make_previous_output "$scratch/heat.png"
-  run_spanlight compare "$small_png" "$wide_png" --diff "$scratch/heat.png"
+  run_spanlight compare "$small_png" "$other_png" --diff "$scratch/heat.png"
   expect_status 2
   expect_unchanged_previous_output "$scratch/heat.png"
   expect_only_files "$scratch" heat.png
+  # Beyond 4096 texels a side: refused from the header, before any pixel is decoded.
+  run_spanlight compare "$small_png" "$wide_png"
+  expect_status 2
+  expect_stderr_has "wide_4097x1.png: expected an image of 1..4096 texels a side, got 4097x1"
   ;;
 compare_missing_argument)
   run_spanlight compare "$small_png"

@@ -1,7 +1,5 @@
 // Emits the baked C++: plain aggregate initialisers, one array per line of data.
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 #include "bake/bake.hpp"
 #include "spanlight/scene_features.hpp"
@@ -43,20 +41,6 @@ void write_matrices(std::ostream& out, const char* name, const std::vector<Mat4B
   }
   if (mats.empty()) out << "{}";
   out << "\n};\n";
-}
-
-void write_atomically(const std::filesystem::path& file, const std::string& text) {
-  const std::filesystem::path temp = file.string() + ".partial";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out.flush()) {
-      std::error_code ignored;
-      std::filesystem::remove(temp, ignored);
-      throw std::runtime_error(file.string() + ": cannot write");
-    }
-  }
-  std::filesystem::rename(temp, file);
 }
 
 }  // namespace
@@ -170,12 +154,9 @@ std::string baked_scene_source(const prepare::PreparedStorage& prepared, const s
 }
 
 void write_baked_scene(const prepare::PreparedStorage& prepared, const Knobs& knobs, const std::string& scene_name,
-                       const std::filesystem::path& out_dir) {
-  std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  if (error) throw std::runtime_error(out_dir.string() + ": cannot create: " + error.message());
-  write_atomically(out_dir / "baked_config.hpp", baked_config_source(prepared, knobs, scene_name));
-  write_atomically(out_dir / "baked_scene.cpp", baked_scene_source(prepared, scene_name));
+                       io::OutputFolder& out) {
+  out.write("baked_config.hpp", baked_config_source(prepared, knobs, scene_name));
+  out.write("baked_scene.cpp", baked_scene_source(prepared, scene_name));
 }
 
 }  // namespace spanlight::bake

@@ -116,7 +116,9 @@ Mesh load_obj_mesh(const std::filesystem::path& obj_file, const std::string& fie
       first_corner += corner_count;
     }
   }
-  return builder.take();
+  Mesh mesh = builder.take();
+  mesh.file = obj_file;
+  return mesh;
 }
 
 }  // namespace spanlight::scene::detail

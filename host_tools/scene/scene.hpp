@@ -47,6 +47,7 @@ struct Camera {
 };
 
 struct Mesh {
+  std::filesystem::path file;  // the OBJ file it was read from; empty for inline positions
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec2> uvs;  // same count as positions (zeros where the file has none)
   std::vector<std::array<std::uint32_t, 3>> triangles;  // indices into positions, checked in range

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "bake/bake.hpp"
+#include "cli/accuracy_warning.hpp"
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"
 #include "cli/load.hpp"
@@ -22,6 +23,7 @@ int run_bake(const BakeArgs& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
   io::OutputFolder out(a.out, "--out", a.force, inputs_of(*scene));  // checked before anything is prepared
+  warn_if_inaccurate(a.knobs);
   const auto prepared = prepare_or_report(*scene);
   if (!prepared) return exit_bad_input;
   bake::write_baked_scene(*prepared, a.knobs, scene->name, out);

@@ -1,6 +1,7 @@
 // spanlight render SCENE.json --backend fixed|float --out FILE.png [knobs]
 #include <string>
 
+#include "cli/accuracy_warning.hpp"
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"
 #include "cli/load.hpp"
@@ -30,6 +31,7 @@ int run_render(const RenderArgs& a) {
   } else {
     const auto prepared = prepare_or_report(*scene);
     if (!prepared) return exit_bad_input;
+    warn_if_inaccurate(a.knobs);
     rgb = prepare::render_fixed(*prepared, a.knobs).rgb;
   }
   io::write_file_atomically(a.out, compare::png_bytes({scene->width, scene->height, rgb}), "--out", inputs);

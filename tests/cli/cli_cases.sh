@@ -166,6 +166,30 @@ render_every_knob)
   mapfile -t rendered < <(for k in $(seq 1 "$i"); do echo "knobs_$k.png"; done)
   expect_only_files "$scratch" "${rendered[@]}"
   ;;
+render_inaccurate_knobs_warn)
+  # A reciprocal worse than 2^-11 (no Newton step, table below 12 bits) renders
+  # but warns with its error bound (docs/reciprocal.md: 7.83e-3 for 6 bits, 2.00
+  # texels at 256); every other combination is silent.
+  for knobs in "--table-bits 6 --newton 0" "--table-bits 8 --newton 0" "--table-bits 10 --newton 0"; do
+    # shellcheck disable=SC2086  # the knobs are meant to split
+    run_spanlight render "$good_scene" --out "$scratch/out.png" $knobs
+    expect_status 0
+    expect_stderr_has "warning: $knobs: the per-span divide is off by up to "
+    [[ "$(png_size "$scratch/out.png")" == "320 240" ]] || fail "$knobs: no 320 x 240 PNG despite the warning"
+  done
+  expect_stderr_has "up to 5.0e-04 (relative), 0.13 texel"  # 10 bits: 2^-11 + 2^-16 = 5.04e-4
+  run_spanlight render "$good_scene" --out "$scratch/out.png" --table-bits 6 --newton 0
+  expect_stderr_has "up to 7.8e-03 (relative), 2.00 texel"
+  for knobs in "" "--table-bits 12 --newton 0" "--table-bits 6" "--table-bits 6 --newton 2"; do
+    # shellcheck disable=SC2086
+    run_spanlight render "$good_scene" --out "$scratch/out.png" $knobs
+    expect_status 0
+    [[ -z "$err_text" ]] || fail "'$knobs' should render without a word on stderr, got: $err_text"
+  done
+  run_spanlight bake "$good_scene" --out "$scratch/baked" --table-bits 8 --newton 0
+  expect_status 0
+  expect_stderr_has "warning: --table-bits 8 --newton 0"
+  ;;
 render_replaces_existing_output)
   # A successful render replaces an earlier file of the same name, atomically.
   make_previous_output "$scratch/out.png"

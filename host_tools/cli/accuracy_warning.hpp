@@ -11,8 +11,8 @@ namespace spanlight::cli {
 
 // The warning for `knobs`, if any: when the reciprocal's proven relative
 // error (fixedpoint/reciprocal_bound.hpp) exceeds 2^-11, which at a texel
-// coordinate of 256 is more than 1/8 texel, the default span tolerance. That
-// is no Newton step with a 6-, 8- or 10-bit table.
+// coordinate of 256 is more than 1/8 texel. That is no Newton step with a 6-,
+// 8- or 10-bit table.
 std::optional<std::string> accuracy_warning(const Knobs& knobs);
 
 // Prints accuracy_warning(knobs), if any, to stderr.

@@ -119,7 +119,7 @@ bake_folder_rules)
   expect_only_files "$out" "$manifest" baked_config.hpp baked_scene.cpp
   run_spanlight bake "$scene" --out "$out" --span 4  # again, into its own folder
   expect_status 0
-  grep -q "precision{2, " "$out/baked_config.hpp" || fail "the second bake did not replace baked_config.hpp"
+  grep -q -- "--span 4 " "$out/baked_config.hpp" || fail "the second bake (--span 4) did not replace baked_config.hpp"
   printf 'mine\n' >"$out/notes.txt"
   run_spanlight bake "$scene" --out "$out"
   expect_status 2

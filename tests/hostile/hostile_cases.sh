@@ -50,7 +50,8 @@ run_case() {
   fi
   if [[ -n "$kib" ]] && ((kib > max_mib * 1024)); then fail "peak memory $((kib / 1024)) MiB, above the cap of $max_mib MiB"; fi
   if [[ "$expected" == 2 ]]; then expect_only_files "$out"; fi
-  echo "$case_name|$status|$seconds|$kib|$deadline|$max_mib|${fragment:-(stderr empty)}" >>"$measured_dir/$case_name.txt"
+  local shown=${fragment//$scratch/SCRATCH}  # the same in every run
+  echo "$case_name|$status|$seconds|$kib|$deadline|$max_mib|${shown:-(stderr empty)}" >>"$measured_dir/$case_name.txt"
 }
 
 render() { run_case "$@"; }  # readability: render STATUS FRAGMENT ARGS...
@@ -63,6 +64,17 @@ scene_with() {
 with_mesh() { scene_with "$1" "$files/png_rgb8.png"; }
 with_image() { scene_with "$files/triangle.obj" "$1"; }
 scene="$scratch/scene.json"
+
+# mesh_refused FILE FRAGMENT, image_refused FILE FRAGMENT: the base scene with
+# files/FILE as its mesh or image is refused with "FILE: FRAGMENT".
+mesh_refused() {
+  with_mesh "$files/$1"
+  render 2 "$1: $2" render "$scene" --out "$out/out.png"
+}
+image_refused() {
+  with_image "$files/$1"
+  render 2 "$1: $2" render "$scene" --out "$out/out.png"
+}
 
 symlink_loop() {
   ln -s "$scratch/loop_b" "$scratch/loop_a"
@@ -136,92 +148,67 @@ scene_16_mb_accepted)
   ((size > 15 * 1024 * 1024 && size <= 16 * 1024 * 1024)) || fail "large.json is $size bytes, meant to be just under 16 MiB"
   render 0 "" render "$scratch/large.json" --out "$out/out.png"
   ;;
-scene_dev_zero)
-  render 2 "/dev/zero: (root): expected a regular file as a scene file, got a character device" render /dev/zero --out "$out/out.png"
-  ;;
-scene_fifo)
-  mkfifo "$scratch/scene.json"
-  render 2 "scene.json: (root): expected a regular file as a scene file, got a FIFO" render "$scratch/scene.json" --out "$out/out.png"
-  ;;
-scene_symlink_loop)
-  symlink_loop
-  render 2 "loop_a: (root): expected a readable scene file, got a symlink loop" render "$scratch/loop_a" --out "$out/out.png"
-  ;;
-# ------------------------------------------------------ files the scene names
-mesh_dev_zero | mesh_dev_urandom)
-  device=/dev/${case_name#mesh_dev_}
-  with_mesh "$device"
-  render 2 "objects[0].mesh: $device: expected a regular file as an OBJ file, got a character device" render "$scene" --out "$out/out.png"
-  ;;
-mesh_fifo)
-  mkfifo "$scratch/mesh.obj"
-  with_mesh "$scratch/mesh.obj"
-  render 2 "mesh.obj: expected a regular file as an OBJ file, got a FIFO" render "$scene" --out "$out/out.png"
-  ;;
-mesh_symlink_loop)
-  symlink_loop
-  with_mesh "$scratch/loop_a"
-  render 2 "loop_a: expected a readable OBJ file, got a symlink loop" render "$scene" --out "$out/out.png"
-  ;;
-image_dev_zero | image_dev_urandom)
-  device=/dev/${case_name#image_dev_}
-  with_image "$device"
-  render 2 "textures.t.image: $device: expected a regular file as an image file, got a character device" render "$scene" --out "$out/out.png"
-  ;;
-image_fifo)
-  mkfifo "$scratch/image.png"
-  with_image "$scratch/image.png"
-  render 2 "image.png: expected a regular file as an image file, got a FIFO" render "$scene" --out "$out/out.png"
-  ;;
-image_symlink_loop)
-  symlink_loop
-  with_image "$scratch/loop_a"
-  render 2 "loop_a: expected a readable image file, got a symlink loop" render "$scene" --out "$out/out.png"
+# ------------------------- not a regular file: as the scene, a mesh, an image
+scene_dev_zero | scene_fifo | scene_symlink_loop | mesh_dev_zero | mesh_dev_urandom | mesh_fifo | mesh_symlink_loop | image_dev_zero | image_dev_urandom | image_fifo | image_symlink_loop)
+  role=${case_name%%_*}  # scene, mesh or image
+  what=${case_name#*_}   # dev_zero, dev_urandom, fifo or symlink_loop
+  case $role in
+  scene) kind="a scene file" field="(root)" ;;
+  mesh) kind="an OBJ file" field="objects[0].mesh" ;;
+  image) kind="an image file" field="textures.t.image" ;;
+  esac
+  case $what in
+  dev_*)
+    path=/dev/${what#dev_}
+    expected="expected a regular file as $kind, got a character device"
+    ;;
+  fifo)
+    path="$scratch/$role.fifo"
+    mkfifo "$path"  # opened for reading, it would block until a writer came
+    expected="expected a regular file as $kind, got a FIFO"
+    ;;
+  symlink_loop)
+    symlink_loop
+    path="$scratch/loop_a"
+    expected="expected a readable ${kind#a* }, got a symlink loop"
+    ;;
+  esac
+  case $role in
+  scene) render 2 "$path: $field: $expected" render "$path" --out "$out/out.png" ;;
+  mesh) with_mesh "$path" && render 2 "$field: $path: $expected" render "$scene" --out "$out/out.png" ;;
+  image) with_image "$path" && render 2 "$field: $path: $expected" render "$scene" --out "$out/out.png" ;;
+  esac
   ;;
 # ----------------------------------------------------------------------- OBJ
 obj_nan)
-  with_mesh "$files/obj_nan.obj"
-  render 2 "obj_nan.obj: expected finite numbers after v, got 'nan' on line 1" render "$scene" --out "$out/out.png"
+  mesh_refused obj_nan.obj "expected finite numbers after v, got 'nan' on line 1"
   ;;
 obj_inf)
-  with_mesh "$files/obj_inf.obj"
-  render 2 "obj_inf.obj: expected finite numbers after v, got 'inf' on line 2" render "$scene" --out "$out/out.png"
+  mesh_refused obj_inf.obj "expected finite numbers after v, got 'inf' on line 2"
   ;;
 obj_1e400)
-  with_mesh "$files/obj_1e400.obj"
-  render 2 "obj_1e400.obj: expected finite numbers after v, got '1e400' on line 3" render "$scene" --out "$out/out.png"
+  mesh_refused obj_1e400.obj "expected finite numbers after v, got '1e400' on line 3"
   ;;
 obj_hex_and_comma)
   # tinyobjloader would read these as 0 and 1.
-  with_mesh "$files/obj_hex.obj"
-  render 2 "obj_hex.obj: expected finite numbers after v, got '0x10' on line 2" render "$scene" --out "$out/out.png"
-  with_mesh "$files/obj_decimal_comma.obj"
-  render 2 "obj_decimal_comma.obj: expected finite numbers after v, got '1,5' on line 2" render "$scene" --out "$out/out.png"
-  with_mesh "$files/obj_two_coordinates.obj"
-  render 2 "obj_two_coordinates.obj: expected 3 or 4 coordinates (6 or 7 with a colour) after v, got 2 on line 2" \
-    render "$scene" --out "$out/out.png"
+  mesh_refused obj_hex.obj "expected finite numbers after v, got '0x10' on line 2"
+  mesh_refused obj_decimal_comma.obj "expected finite numbers after v, got '1,5' on line 2"
+  mesh_refused obj_two_coordinates.obj "expected 3 or 4 coordinates (6 or 7 with a colour) after v, got 2 on line 2"
   ;;
 obj_index_0)
-  with_mesh "$files/obj_index_0.obj"
-  render 2 "obj_index_0.obj: expected vertex (v) indices counted from 1 (or back from -1 to -3), got '0'" render "$scene" --out "$out/out.png"
+  mesh_refused obj_index_0.obj "expected vertex (v) indices counted from 1 (or back from -1 to -3), got '0'"
   ;;
 obj_negative_indices)
   # Relative indices are OBJ: -1 is the last vertex before the face.
   with_mesh "$files/obj_negative_indices.obj"
   render 0 "" render "$scene" --out "$out/out.png"
   rm -f "$out/out.png"
-  with_mesh "$files/obj_negative_out_of_range.obj"
-  render 2 "obj_negative_out_of_range.obj: expected vertex (v) indices counted from 1 (or back from -1 to -3), got '-4'" \
-    render "$scene" --out "$out/out.png"
+  mesh_refused obj_negative_out_of_range.obj "expected vertex (v) indices counted from 1 (or back from -1 to -3), got '-4'"
   ;;
 obj_index_out_of_range)
-  with_mesh "$files/obj_index_out_of_range.obj"
-  render 2 "obj_index_out_of_range.obj: expected vertex (v) indices in 1..3, got 4 in face 1" render "$scene" --out "$out/out.png"
-  with_mesh "$files/obj_index_2_31.obj"
-  render 2 "obj_index_2_31.obj: expected vertex (v) indices counted from 1 (or back from -1 to -3), got '2147483648'" \
-    render "$scene" --out "$out/out.png"
-  with_mesh "$files/obj_index_huge.obj"
-  render 2 "got '99999999999999999999'" render "$scene" --out "$out/out.png"
+  mesh_refused obj_index_out_of_range.obj "expected vertex (v) indices in 1..3, got 4 in face 1"
+  mesh_refused obj_index_2_31.obj "expected vertex (v) indices counted from 1 (or back from -1 to -3), got '2147483648'"
+  mesh_refused obj_index_huge.obj "expected vertex (v) indices counted from 1 (or back from -1 to -3), got '99999999999999999999'"
   ;;
 obj_mtllib_dev_zero)
   # Materials are not read at all: no file an OBJ names is opened.
@@ -240,13 +227,11 @@ f 3 4 4' | head -n 1000000; } >"$scratch/million.obj"
 # ----------------------------------------------------------------------- PNG
 png_header_100000x100000)
   # 30 GB of pixels if decoded: refused from the header, nothing that size allocated.
-  with_image "$files/png_100000x100000.png"
   max_mib=300
-  render 2 "png_100000x100000.png: expected an image of 1..4096 texels a side, got 100000x100000" render "$scene" --out "$out/out.png"
+  image_refused png_100000x100000.png "expected an image of 1..4096 texels a side, got 100000x100000"
   ;;
 png_truncated)
-  with_image "$files/png_truncated.png"
-  render 2 "png_truncated.png: expected readable pixel data, got: " render "$scene" --out "$out/out.png"
+  image_refused png_truncated.png "expected readable pixel data, got: "
   ;;
 png_16bit | png_grey | png_grey_alpha | png_rgba)
   # The spec takes grey, RGB and RGBA, alpha ignored; 16 bits a channel are

@@ -46,12 +46,7 @@ int failing_rename(const char*, const char*) {
 }
 
 std::string failure(const fs::path& file, const std::string& bytes, const SystemCalls& calls) {
-  try {
-    write_file_atomically(file, bytes, "--out", {}, calls);
-  } catch (const OutputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::message_of<OutputError>([&] { write_file_atomically(file, bytes, "--out", {}, calls); });
 }
 
 }  // namespace

@@ -19,12 +19,7 @@ namespace {
 
 // The OutputError's message, or "" when the output is accepted.
 std::string refusal(const fs::path& out, const RunInputs& inputs = {}) {
-  try {
-    check_output_file(out, "--out", inputs);
-  } catch (const OutputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::message_of<OutputError>([&] { check_output_file(out, "--out", inputs); });
 }
 
 }  // namespace

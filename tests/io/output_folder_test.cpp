@@ -23,12 +23,7 @@ namespace {
 const std::string manifest(OutputFolder::manifest_name);
 
 std::string refusal(const fs::path& dir, bool force = false, const RunInputs& inputs = {}) {
-  try {
-    OutputFolder folder(dir, "--out", force, inputs);
-  } catch (const OutputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::message_of<OutputError>([&] { OutputFolder folder(dir, "--out", force, inputs); });
 }
 
 }  // namespace

@@ -28,6 +28,17 @@ inline std::string contents(const std::filesystem::path& file) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// The what() of the Error that run() throws, or "" when it returns.
+template <typename Error, typename Run>
+std::string message_of(Run&& run) {
+  try {
+    run();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
 inline bool make_fifo(const std::filesystem::path& path) { return ::mkfifo(path.c_str(), 0644) == 0; }
 
 // A bound Unix socket leaves a socket file at `path`.

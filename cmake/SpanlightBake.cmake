@@ -2,12 +2,12 @@
 #
 # Bakes a scene at build time with `spanlight bake` and compiles the result into <target>:
 #   <dir>/baked_scene.cpp    added to the target's sources (const arrays, the PreparedScene)
-#   <dir>/baked_config.hpp   on the target's include path (baked::Features, sizes, Precision)
+#   <dir>/baked_config.hpp   on the target's include path (baked::features, baked::knobs, sizes)
 # SCENE is relative to the current source folder; OUT (default: spanlight_baked/<target> in the
 # current binary folder) to the current binary folder. KNOBS go to `spanlight bake` as they are,
 # e.g. KNOBS --format rgb565 --depth-bits 16, or KNOBS --config ${CMAKE_CURRENT_SOURCE_DIR}/knobs.json.
-# The bake writes a depfile listing the scene and every file it read (textures, OBJ meshes, the
-# --config file), so editing any of them bakes again, and nothing else does. One bake per target:
+# The bake writes a depfile listing the scene and every file it read (textures, OBJ meshes), so
+# editing any of them bakes again, and nothing else does. One bake per target:
 # the generated names live in namespace baked.
 #
 # The baking program is the host `spanlight`, found in this order:

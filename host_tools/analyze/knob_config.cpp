@@ -1,10 +1,11 @@
 #include "analyze/knob_config.hpp"
 
-#include <fstream>
 #include <set>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+
+#include "io/read_file.hpp"
 
 namespace spanlight::analyze {
 namespace {
@@ -52,11 +53,10 @@ std::string to_json(const KnobConfig& c, const std::string& measured_json) {
 
 KnobConfig read_knob_config(const std::filesystem::path& path) {
   const std::string file = path.string();
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(file + ": cannot read");
+  const std::string text = io::read_regular_file(path, "knob config", io::mebibyte);  // a dozen fields
   json j;
   try {
-    j = json::parse(in);
+    j = json::parse(text);
   } catch (const json::parse_error& e) {
     throw std::runtime_error(file + ": not JSON: " + e.what());
   }

@@ -4,9 +4,9 @@
 // so the firmware renders exactly what the host renders, from the same bytes.
 #pragma once
 
-#include <filesystem>
 #include <string>
 
+#include "io/output_folder.hpp"
 #include "prepare/prepare.hpp"
 #include "spanlight/knobs.hpp"
 
@@ -17,16 +17,13 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
                                 const std::string& scene_name);
 std::string baked_scene_source(const prepare::PreparedStorage& prepared, const std::string& scene_name);
 
-// The two files a bake writes into out_dir.
-struct BakedFiles {
-  std::filesystem::path scene;   // baked_scene.cpp
-  std::filesystem::path config;  // baked_config.hpp
-};
-BakedFiles baked_files(const std::filesystem::path& out_dir);
+// The two files a bake writes, relative to its output folder.
+inline constexpr const char* baked_scene_file = "baked_scene.cpp";
+inline constexpr const char* baked_config_file = "baked_config.hpp";
 
-// Writes both into `out_dir` (created if missing), each through a temporary
-// file and a rename. Throws std::runtime_error naming the file on failure.
+// Writes both into `out` (io::OutputFolder: created if missing, each file
+// atomic, listed in the folder's manifest). Throws io::OutputError.
 void write_baked_scene(const prepare::PreparedStorage& prepared, const Knobs& knobs, const std::string& scene_name,
-                       const std::filesystem::path& out_dir);
+                       io::OutputFolder& out);
 
 }  // namespace spanlight::bake

@@ -34,15 +34,6 @@ bool same_file(const fs::path& a, const fs::path& b) {
 
 }  // namespace
 
-std::vector<fs::path> files_read(const scene::Scene& scene) {
-  std::vector<fs::path> files{scene.file};
-  for (const scene::Texture& texture : scene.textures) add_once(files, texture.path);
-  for (const scene::Object& object : scene.objects) {
-    if (!object.mesh.file.empty()) add_once(files, object.mesh.file);
-  }
-  return files;
-}
-
 std::string depfile_text(const std::vector<fs::path>& targets, const std::vector<fs::path>& inputs) {
   std::string text;
   for (const fs::path& target : targets) text += (text.empty() ? "" : " ") + escaped(target);

@@ -8,13 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene.hpp"
 
 namespace spanlight::bake {
-
-// Every file the loaded scene was read from, each once, in reading order: the scene file, the
-// images of its textures, the OBJ files of its meshes.
-std::vector<std::filesystem::path> files_read(const scene::Scene& scene);
 
 // "targets: inputs" with every path made absolute and escaped for Make (space, '#', '$'), one
 // input per line. Throws std::invalid_argument for a path with a line break: the syntax has none.

@@ -1,11 +1,9 @@
 // Emits the baked C++: plain aggregate initialisers, one array per line of data.
-#include <fstream>
+#include <cstdio>
 #include <sstream>
-#include <stdexcept>
 
 #include "bake/bake.hpp"
 #include "spanlight/scene_features.hpp"
-#include "bake/write_atomically.hpp"
 
 namespace spanlight::bake {
 namespace {
@@ -46,6 +44,27 @@ void write_matrices(std::ostream& out, const char* name, const std::vector<Mat4B
   out << "\n};\n";
 }
 
+// The scene's name as a C++ string literal. A name is any JSON string: a quote,
+// a backslash or a newline written as is would end the literal or the comment
+// and put the rest of the name into the firmware's source as code.
+std::string cpp_string_literal(const std::string& text) {
+  std::string literal = "\"";
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (c == '"' || c == '\\') {
+      literal += '\\';
+      literal += c;
+    } else if (byte < 0x20 || byte == 0x7f) {  // control characters, a newline among them
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\%03o", byte);
+      literal += escaped;
+    } else {
+      literal += c;  // printable ASCII and UTF-8 bytes
+    }
+  }
+  return literal + "\"";
+}
+
 }  // namespace
 
 std::string baked_config_source(const prepare::PreparedStorage& prepared, const Knobs& knobs,
@@ -56,7 +75,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
   for (int j = 0; j < s.projector_count; ++j)
     if (s.projectors[j].shadows) shadow_texels += std::uint32_t{s.projectors[j].map_size} * s.projectors[j].map_size;
   std::ostringstream out;
-  out << "// Baked by `spanlight bake` from scene \"" << scene_name << "\". Do not edit: bake again.\n"
+  out << "// Baked by `spanlight bake` from scene " << cpp_string_literal(scene_name) << ". Do not edit: bake again.\n"
       << "// Only what the scene uses is switched on, so the rest is never compiled.\n"
       << "#pragma once\n\n#include <cstdint>\n\n#include \"spanlight/render.hpp\"\n\n"
       << "namespace baked {\n\n"
@@ -76,7 +95,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << int(knobs.table_bits) << ", " << int(knobs.newton) << ", " << int(knobs.depth_bits) << ", features.format, spanlight::Passes::"
       << (knobs.passes == Passes::fused ? "fused" : "multipass") << "};\n"
       << "using Depth = " << (knobs.depth_bits <= 16 ? "std::uint16_t" : "std::uint32_t") << ";\n\n"
-      << "inline constexpr const char* scene_name = \"" << scene_name << "\";\n"
+      << "inline constexpr const char* scene_name = " << cpp_string_literal(scene_name) << ";\n"
       << "inline constexpr std::uint16_t width = " << s.width << ";\n"
       << "inline constexpr std::uint16_t height = " << s.height << ";\n"
       << "inline constexpr int projector_count = " << int(s.projector_count) << ";\n"
@@ -93,7 +112,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
 std::string baked_scene_source(const prepare::PreparedStorage& prepared, const std::string& scene_name) {
   const PreparedScene& s = prepared.scene;
   std::ostringstream out;
-  out << "// Baked by `spanlight bake` from scene \"" << scene_name << "\". Do not edit: bake again.\n"
+  out << "// Baked by `spanlight bake` from scene " << cpp_string_literal(scene_name) << ". Do not edit: bake again.\n"
       << "#include \"baked_config.hpp\"\n\nnamespace baked {\nnamespace {\n\nusing namespace spanlight;\n\n";
   for (std::size_t t = 0; t < prepared.texture_storage.size(); ++t) {
     const prepare::PreparedTexture& storage = prepared.texture_storage[t];
@@ -157,17 +176,9 @@ std::string baked_scene_source(const prepare::PreparedStorage& prepared, const s
 }
 
 void write_baked_scene(const prepare::PreparedStorage& prepared, const Knobs& knobs, const std::string& scene_name,
-                       const std::filesystem::path& out_dir) {
-  std::error_code error;
-  std::filesystem::create_directories(out_dir, error);
-  if (error) throw std::runtime_error(out_dir.string() + ": cannot create: " + error.message());
-  const BakedFiles files = baked_files(out_dir);
-  write_atomically(files.config, baked_config_source(prepared, knobs, scene_name));
-  write_atomically(files.scene, baked_scene_source(prepared, scene_name));
-}
-
-BakedFiles baked_files(const std::filesystem::path& out_dir) {
-  return {out_dir / "baked_scene.cpp", out_dir / "baked_config.hpp"};
+                       io::OutputFolder& out) {
+  out.write(baked_config_file, baked_config_source(prepared, knobs, scene_name));
+  out.write(baked_scene_file, baked_scene_source(prepared, scene_name));
 }
 
 }  // namespace spanlight::bake

@@ -12,10 +12,10 @@
 #include "analyze/scene_ranges.hpp"
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
+#include "io/atomic_write.hpp"
 #include "prepare/prepare.hpp"
 #include "sweep/csv_io.hpp"
 #include "sweep/qemu_bench.hpp"
-#include "sweep/report_files.hpp"
 #include "sweep/sweep_run.hpp"
 
 namespace spanlight::cli {
@@ -50,6 +50,9 @@ sweep::SweepResult measure(const scene::Scene& scene, const AnalyzeArgs& a) {
 int run_analyze(const AnalyzeArgs& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
+  io::RunInputs inputs = inputs_of(*scene);
+  if (!a.sweep_csv.empty()) inputs.add(a.sweep_csv);
+  if (!a.write_config.empty()) io::check_output_file(a.write_config, "--write-config", inputs);  // before sweeping
   const analyze::SceneRanges ranges = analyze::measure_ranges(*scene);
   const std::vector<analyze::FormatChoice> formats = analyze::choose_formats(ranges);
   std::printf("%s\n%s\n%s\n", analyze::features_text(*scene).c_str(), analyze::ranges_text(ranges).c_str(),
@@ -80,7 +83,8 @@ int run_analyze(const AnalyzeArgs& a) {
     std::printf("  (the proposal forces every texture to %s: bake --config applies that; a plain bake keeps the scene's filters)\n",
                 sweep::to_string(row.config.filter));
   if (!a.write_config.empty()) {
-    sweep::write_text_file(a.write_config, analyze::to_json({row.config, format}, analyze::measured_json(result, row, target)));
+    io::write_file_atomically(a.write_config, analyze::to_json({row.config, format}, analyze::measured_json(result, row, target)),
+                              "--write-config", inputs);
     std::printf("or:\n  spanlight bake %s --out baked/ --config %s\n", a.scene.c_str(), a.write_config.c_str());
   }
   return exit_ok;
@@ -100,7 +104,8 @@ Command add_analyze_command(CLI::App& app) {
       ->excludes(max_error);
   cmd->add_option("--sweep-csv", a->sweep_csv, "use the measurements of an earlier `spanlight sweep` (its sweep.csv) "
                                                "instead of sweeping now");
-  cmd->add_option("--write-config", a->write_config, "write the proposal as JSON for `spanlight bake --config`");
+  cmd->add_option("--write-config", a->write_config,
+                  "write the proposal as JSON for `spanlight bake --config` (a new file or a regular one to replace)");
   cmd->add_flag("--allow-filter-change", a->allow_filter_change, "also consider forcing every texture to one filter");
   cmd->add_option("--format", a->format, "framebuffer format")->check(CLI::IsMember({"rgb888", "rgb565"}));
   cmd->add_option("--qemu-grid", a->qemu_grid, "QEMU runs when sweeping: cost, full or none")

@@ -7,10 +7,12 @@
 
 #include "bake/bake.hpp"
 #include "bake/depfile.hpp"
-#include "bake/write_atomically.hpp"
+#include "cli/accuracy_warning.hpp"
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"
 #include "cli/load.hpp"
+#include "io/atomic_write.hpp"
+#include "scene/scene_files.hpp"
 #include "spanlight/scene_features.hpp"
 
 namespace spanlight::cli {
@@ -21,35 +23,39 @@ struct BakeArgs {
   std::string out;
   std::string depfile;  // where to list the files the bake read, for the build that runs it
   Knobs knobs;
+  bool force = false;
 };
 
 int run_bake(const BakeArgs& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
+  io::OutputFolder out(a.out, "--out", a.force, inputs_of(*scene));  // checked before anything is prepared
+  warn_if_inaccurate(a.knobs);
   const auto prepared = prepare_or_report(*scene);
   if (!prepared) return exit_bad_input;
   std::string depfile_text;  // made before anything is written: a bad name leaves no output
+  const std::filesystem::path outputs[2] = {out.path() / bake::baked_scene_file, out.path() / bake::baked_config_file};
   if (!a.depfile.empty()) {
-    const std::vector<std::filesystem::path> inputs = bake::files_read(*scene);
-    const bake::BakedFiles outputs = bake::baked_files(a.out);
-    const std::string refusal = bake::depfile_refusal(a.depfile, inputs, {outputs.scene, outputs.config});
+    const std::vector<std::filesystem::path> inputs = scene::files_read(*scene);
+    const std::string refusal = bake::depfile_refusal(a.depfile, inputs, {outputs[0], outputs[1]});
     if (!refusal.empty()) {
       std::fprintf(stderr, "%s: --depfile: %s\n", a.depfile.c_str(), refusal.c_str());
       return exit_bad_input;
     }
     try {
-      depfile_text = bake::depfile_text({outputs.scene, outputs.config}, inputs);
+      depfile_text = bake::depfile_text({outputs[0], outputs[1]}, inputs);
     } catch (const std::invalid_argument& e) {
       std::fprintf(stderr, "%s\n", e.what());
       return exit_bad_input;
     }
   }
-  try {
-    bake::write_baked_scene(*prepared, a.knobs, scene->name, a.out);
-    if (!a.depfile.empty()) bake::write_atomically(a.depfile, depfile_text);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "%s\n", e.what());
-    return exit_bad_input;
+  bake::write_baked_scene(*prepared, a.knobs, scene->name, out);
+  if (!a.depfile.empty()) {
+    // Inside --out it is one of the bake's own files (listed in the folder's manifest, so the
+    // next bake accepts the folder); elsewhere a file of its own.
+    const std::filesystem::path inside = std::filesystem::path(a.depfile).lexically_normal().lexically_relative(out.path().lexically_normal());
+    if (!inside.empty() && *inside.begin() != "..") out.write(inside, depfile_text);
+    else io::write_file_atomically(a.depfile, depfile_text, "--depfile", inputs_of(*scene));
   }
   const Features f = features_of(prepared->scene, a.knobs);
   std::printf("baked %s into %s: %d projector(s), shadows %s%s, filters%s%s, %s\n", scene->name.c_str(), a.out.c_str(),
@@ -64,7 +70,8 @@ Command add_bake_command(CLI::App& app) {
   auto args = std::make_shared<BakeArgs>();
   CLI::App* cmd = app.add_subcommand("bake", "write a scene as C++ sources (baked_scene.cpp, baked_config.hpp) for firmware");
   cmd->add_option("scene", args->scene, "scene file")->required();
-  cmd->add_option("--out", args->out, "output folder")->required();
+  cmd->add_option("--out", args->out, "output folder: new, empty, or holding only what spanlight wrote there")->required();
+  cmd->add_flag("--force", args->force, "write into --out even when it holds other files (none is removed)");
   cmd->add_option("--depfile", args->depfile,
                   "also write FILE: a Makefile-syntax rule naming the scene and every file it read, for the build")
       ->type_name("FILE");

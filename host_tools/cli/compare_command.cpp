@@ -4,6 +4,7 @@
 
 #include "cli/commands.hpp"
 #include "compare/compare.hpp"
+#include "io/atomic_write.hpp"
 
 namespace spanlight::cli {
 namespace {
@@ -14,12 +15,14 @@ struct CompareArgs {
 };
 
 int run_compare(const CompareArgs& args) {
+  const io::RunInputs inputs{args.a, args.b};
+  if (!args.diff.empty()) io::check_output_file(args.diff, "--diff", inputs);
   compare::CompareResult result;
   try {
     result = compare::compare_images(args.a, args.b);
-    if (!args.diff.empty() && !compare::write_heat_map(args.a, args.b, args.diff)) {
-      std::fprintf(stderr, "%s: cannot write the heat map\n", args.diff.c_str());
-      return exit_bad_input;
+    if (!args.diff.empty()) {
+      const io::Rgb8Image heat = compare::heat_map(args.a, args.b);
+      io::write_file_atomically(args.diff, compare::png_bytes({heat.width, heat.height, heat.rgb}), "--diff", inputs);
     }
   } catch (const compare::CompareError& e) {
     std::fprintf(stderr, "%s\n", e.what());
@@ -36,7 +39,7 @@ Command add_compare_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("compare", "PSNR and error in 8-bit levels between two images");
   cmd->add_option("a", args->a, "first image")->required();
   cmd->add_option("b", args->b, "second image (the reference)")->required();
-  cmd->add_option("--diff", args->diff, "write a heat map of the differences");
+  cmd->add_option("--diff", args->diff, "write a heat map of the differences (PNG; never over either image)");
   cmd->add_flag("--json", args->json, "print JSON instead of text");
   return [args] { return run_compare(*args); };
 }

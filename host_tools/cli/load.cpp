@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "scene/scene_files.hpp"
+
 namespace spanlight::cli {
 
 std::optional<scene::Scene> load_or_report(const std::string& file) {
@@ -20,6 +22,12 @@ std::unique_ptr<prepare::PreparedStorage> prepare_or_report(const scene::Scene& 
     std::fprintf(stderr, "%s: %s\n", scene.file.string().c_str(), e.what());
     return nullptr;
   }
+}
+
+io::RunInputs inputs_of(const scene::Scene& scene) {
+  io::RunInputs inputs;
+  inputs.add(scene::files_read(scene));
+  return inputs;
 }
 
 }  // namespace spanlight::cli

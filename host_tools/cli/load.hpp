@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "io/output_check.hpp"
 #include "prepare/prepare.hpp"
 #include "scene/scene.hpp"
 
@@ -13,5 +14,7 @@ namespace spanlight::cli {
 
 std::optional<scene::Scene> load_or_report(const std::string& file);
 std::unique_ptr<prepare::PreparedStorage> prepare_or_report(const scene::Scene& scene);
+// The scene file and every mesh and image it read: what no output may be.
+io::RunInputs inputs_of(const scene::Scene& scene);
 
 }  // namespace spanlight::cli

@@ -5,6 +5,8 @@
 #include <string>
 
 #include "cli/commands.hpp"
+#include "io/output_check.hpp"
+#include "io/read_file.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"spanlight: fixed-point projective texturing, shadows and multipass lighting (Segal et al. '92)"};
@@ -28,6 +30,12 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(name)) {
       try {
         return run();
+      } catch (const spanlight::io::OutputError& e) {  // "FILE: OPTION: expected ...": the message is the whole story
+        std::fprintf(stderr, "%s\n", e.what());
+        return spanlight::cli::exit_bad_input;
+      } catch (const spanlight::io::ReadError& e) {  // "FILE: expected ..."
+        std::fprintf(stderr, "%s\n", e.what());
+        return spanlight::cli::exit_bad_input;
       } catch (const std::exception& e) {
         std::fprintf(stderr, "spanlight %s: error: %s\n", name.c_str(), e.what());
         return spanlight::cli::exit_bad_input;

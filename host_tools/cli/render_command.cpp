@@ -1,13 +1,14 @@
 // spanlight render SCENE.json --backend fixed|float --out FILE.png [knobs]
-#include <cstdio>
 #include <string>
 
+#include "cli/accuracy_warning.hpp"
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"
 #include "cli/load.hpp"
 #include "prepare/render_fixed.hpp"
 #include "compare/compare.hpp"
 #include "float_model/float_model.hpp"
+#include "io/atomic_write.hpp"
 
 namespace spanlight::cli {
 namespace {
@@ -22,19 +23,18 @@ struct RenderArgs {
 int run_render(const RenderArgs& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
+  const io::RunInputs inputs = inputs_of(*scene);
+  io::check_output_file(a.out, "--out", inputs);  // before rendering; write_file_atomically checks again
   std::vector<std::uint8_t> rgb;
   if (a.backend == "float") {
     rgb = float_model::render_float(*scene).rgb;
   } else {
     const auto prepared = prepare_or_report(*scene);
     if (!prepared) return exit_bad_input;
+    warn_if_inaccurate(a.knobs);
     rgb = prepare::render_fixed(*prepared, a.knobs).rgb;
   }
-  std::string error;
-  if (!compare::write_png_atomically(a.out, scene->width, scene->height, rgb, &error)) {
-    std::fprintf(stderr, "%s: cannot write: %s\n", a.out.c_str(), error.c_str());
-    return exit_bad_input;
-  }
+  io::write_file_atomically(a.out, compare::png_bytes({scene->width, scene->height, rgb}), "--out", inputs);
   return exit_ok;
 }
 
@@ -46,7 +46,10 @@ Command add_render_command(CLI::App& app) {
   cmd->add_option("scene", args->scene, "scene file (JSON, see docs/scene-format.md)")->required();
   cmd->add_option("--backend", args->backend, "fixed (the firmware pipeline) or float (the double-precision model)")
       ->check(CLI::IsMember({"fixed", "float"}));
-  cmd->add_option("--out", args->out, "output PNG")->required();
+  cmd->add_option("--out", args->out,
+                  "output PNG: a new file or a regular one to replace (never a device, a folder or one of the "
+                  "scene's own files)")
+      ->required();
   add_knob_options(*cmd, args->knobs);
   return [args] { return run_render(*args); };
 }

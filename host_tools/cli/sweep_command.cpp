@@ -5,6 +5,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/load.hpp"
+#include "io/output_folder.hpp"
 #include "prepare/prepare.hpp"
 #include "sweep/qemu_bench.hpp"
 #include "sweep/report_files.hpp"
@@ -22,7 +23,7 @@ struct SweepArgs {
   std::string format = "rgb888", qemu_grid = "cost", firmware_dir, runner;
   std::vector<std::string> cpus{"cortex-m7", "cortex-m0plus"};
   int repeats = 3, jobs = 2, pictures = 4;
-  bool no_passes = false, quiet = false;
+  bool no_passes = false, quiet = false, force = false;
 };
 
 sweep::SweepOptions to_options(const SweepArgs& a) {
@@ -52,11 +53,12 @@ int run_sweep_command(const SweepArgs& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
   if (!prepare_or_report(*scene)) return exit_bad_input;  // reports a scene the fixed formats cannot hold
+  io::OutputFolder out(a.out, "--out", a.force, inputs_of(*scene));  // checked before the sweep's minutes of work
   const sweep::SweepOptions options = to_options(a);
   sweep::Progress progress(stderr, a.quiet);
   const sweep::SweepResult result = sweep::run_sweep(*scene, options, progress);
   for (const std::string& note : result.notes) std::fprintf(stderr, "note: %s\n", note.c_str());  // also when quiet
-  sweep::write_report(a.out, *scene, result, options.format, static_cast<std::size_t>(a.pictures));
+  sweep::write_report(out, *scene, result, options.format, static_cast<std::size_t>(a.pictures));
 
   std::printf("swept %s: %zu configurations in %.0f s -> %s/{sweep.csv,report.html,front.md}\n", result.scene_name.c_str(),
               result.rows.size(), result.seconds, a.out.c_str());
@@ -74,7 +76,11 @@ Command add_sweep_command(CLI::App& app) {
   auto a = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand("sweep", "render a scene over a grid of knobs; record accuracy, cost and memory");
   cmd->add_option("scene", a->scene, "scene file")->required();
-  cmd->add_option("--out", a->out, "output folder (sweep.csv, report.html, front.md, SVG plots, images/)")->required();
+  cmd->add_option("--out", a->out,
+                  "output folder (sweep.csv, report.html, front.md, SVG plots, images/): new, empty, or holding only "
+                  "what spanlight wrote there")
+      ->required();
+  cmd->add_flag("--force", a->force, "write into --out even when it holds other files (none is removed)");
   cmd->add_option("--spans", a->spans, "span lengths in pixels")->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}))->delimiter(',');
   cmd->add_option("--tolerances", a->tolerances, "span tolerances (2^-N texel; 0: never shorten)")->check(CLI::Range(0, 10))->delimiter(',');
   cmd->add_option("--table-bits", a->table_bits, "reciprocal table sizes")->check(CLI::IsMember({6, 8, 10, 12}))->delimiter(',');

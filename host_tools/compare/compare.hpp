@@ -2,8 +2,9 @@
 // The arithmetic is OpenImageIO's (ImageBufAlgo::compare, absdiff, maxchan,
 // color_range_check, color_map); this module only fixes the definitions:
 //
-//   LSB             one 8-bit level (1/255). Images are compared as 8-bit RGB:
-//                   grey files are expanded to RGB, alpha is dropped.
+//   LSB             one 8-bit level (1/255). Images are compared as 8-bit RGB
+//                   (io::read_rgb8_image: grey expanded, alpha dropped, at most
+//                   4096 texels a side).
 //   psnr_db         20 * log10(1 / rms), rms over all pixels and all three
 //                   channels in [0, 1] units (peak 255 LSB). +inf when the images
 //                   are identical: "inf" in text, null in JSON.
@@ -19,6 +20,8 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+
+#include "io/image_file.hpp"
 
 namespace spanlight::compare {
 
@@ -51,11 +54,9 @@ CompareResult compare_images(Rgb8View a, Rgb8View b);
 // A picture of where the images differ: each pixel's largest channel |diff|,
 // black for 0, then on a log scale blue (1 LSB), green (~3), yellow (~10),
 // red (32 LSB and more), so a one-level difference already stands out.
-// Written with write_png_atomically; false when writing fails. Throws
-// CompareError for unreadable or mismatched inputs.
-bool write_heat_map(const std::filesystem::path& a, const std::filesystem::path& b,
-                    const std::filesystem::path& out_png);
-bool write_heat_map(Rgb8View a, Rgb8View b, const std::filesystem::path& out_png);
+// Throws CompareError for unreadable or mismatched inputs.
+io::Rgb8Image heat_map(const std::filesystem::path& a, const std::filesystem::path& b);
+io::Rgb8Image heat_map(Rgb8View a, Rgb8View b);
 
 // The heat map's colour for a difference of `lsb` levels (>= 32 is red).
 std::array<std::uint8_t, 3> heat_map_colour(int lsb);
@@ -68,10 +69,12 @@ std::string to_text(const CompareResult& result);
 // All figures on one line, for logs.
 std::string to_one_line(const CompareResult& result);
 
-// Writes an 8-bit RGB PNG (top row first) to a temporary file in the same
-// folder, then renames it over `path`: a reader never sees a half-written file,
-// and a failure leaves nothing behind. On failure returns false and, when
-// `error` is given, says why.
+// An 8-bit RGB image (top row first) encoded as PNG, in memory: the bytes a
+// command hands to io::write_file_atomically. Throws CompareError.
+std::string png_bytes(Rgb8View image);
+
+// png_bytes() written with io::write_file_atomically (no inputs to protect:
+// for tests and tools). On failure returns false and, when `error` is given, says why.
 bool write_png_atomically(const std::filesystem::path& path, int width, int height,
                           std::span<const std::uint8_t> rgb8, std::string* error = nullptr);
 

@@ -30,7 +30,7 @@ Rgb ramp(int lsb) {
   return colour;
 }
 
-bool write_heat_map_of(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const std::filesystem::path& out_png) {
+io::Rgb8Image heat_map_of(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b) {
   require_same_size(a, b);
   // One knot per whole level 0..32; OIIO's color_map spaces knots evenly over [0, 1].
   std::vector<float> knots;
@@ -42,11 +42,7 @@ bool write_heat_map_of(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b, const s
   const OIIO::ImageBuf position = OIIO::ImageBufAlgo::clamp(OIIO::ImageBufAlgo::mul(difference, to_knot_units), 0.0f, 1.0f);
   const OIIO::ImageBuf heat = OIIO::ImageBufAlgo::color_map(position, 0, red_at_lsb + 1, 3, knots);
   if (heat.has_error()) throw CompareError("heat map: " + heat.geterror());
-
-  const OIIO::ImageSpec& spec = heat.spec();
-  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * 3);
-  heat.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, rgb.data());
-  return write_png_atomically(out_png, spec.width, spec.height, rgb);
+  return to_rgb8(heat);
 }
 
 }  // namespace
@@ -58,8 +54,7 @@ std::array<std::uint8_t, 3> heat_map_colour(int lsb) {
   return out;
 }
 
-bool write_heat_map(const std::filesystem::path& a, const std::filesystem::path& b,
-                    const std::filesystem::path& out_png) {
+io::Rgb8Image heat_map(const std::filesystem::path& a, const std::filesystem::path& b) {
   const OIIO::ImageBuf image_a = read_rgb(a);
   const OIIO::ImageBuf image_b = read_rgb(b);
   try {
@@ -67,11 +62,9 @@ bool write_heat_map(const std::filesystem::path& a, const std::filesystem::path&
   } catch (const CompareError& e) {
     throw CompareError(a.string() + " and " + b.string() + ": " + e.what());
   }
-  return write_heat_map_of(image_a, image_b, out_png);
+  return heat_map_of(image_a, image_b);
 }
 
-bool write_heat_map(Rgb8View a, Rgb8View b, const std::filesystem::path& out_png) {
-  return write_heat_map_of(to_image_buf(a), to_image_buf(b), out_png);
-}
+io::Rgb8Image heat_map(Rgb8View a, Rgb8View b) { return heat_map_of(to_image_buf(a), to_image_buf(b)); }
 
 }  // namespace spanlight::compare

@@ -2,38 +2,43 @@
 
 #include <string>
 
-#include <OpenImageIO/imagebufalgo.h>
+#include "io/image_file.hpp"
 
 namespace spanlight::compare {
 
 OIIO::ImageBuf read_rgb(const std::filesystem::path& file) {
-  OIIO::ImageBuf image(file.string());
-  if (!image.read(0, 0, true, OIIO::TypeDesc::UINT8)) {
-    throw CompareError("cannot read " + file.string() + ": " + image.geterror());
+  try {
+    const io::Rgb8Image image = io::read_rgb8_image(file, "image file");
+    return to_image_buf({image.width, image.height, image.rgb});
+  } catch (const io::ReadError& e) {
+    throw CompareError(e.what());
   }
-  const int channels = image.nchannels();
-  if (channels == 3) return image;
-  // Grey: the one channel three times; RGBA (or more): the first three.
-  const int order_grey[3] = {0, 0, 0};
-  const int order_rgb[3] = {0, 1, 2};
-  if (channels != 1 && channels < 3) {
-    throw CompareError(file.string() + ": expected a grey, RGB or RGBA image, found " + std::to_string(channels) +
-                       " channels");
-  }
-  OIIO::ImageBuf rgb = OIIO::ImageBufAlgo::channels(image, 3, channels == 1 ? order_grey : order_rgb);
-  if (rgb.has_error()) throw CompareError(file.string() + ": " + rgb.geterror());
-  return rgb;
 }
 
-OIIO::ImageBuf to_image_buf(Rgb8View view) {
-  const auto expected = static_cast<std::size_t>(view.width) * static_cast<std::size_t>(view.height) * 3;
+void require_rgb8_size(Rgb8View view) {
+  const auto expected = static_cast<std::size_t>(view.width > 0 ? view.width : 0) *
+                        static_cast<std::size_t>(view.height > 0 ? view.height : 0) * 3;
   if (view.width <= 0 || view.height <= 0 || view.rgb.size() != expected) {
     throw CompareError("RGB8 buffer of " + std::to_string(view.rgb.size()) + " bytes does not hold a " +
                        std::to_string(view.width) + " x " + std::to_string(view.height) + " RGB image");
   }
+}
+
+OIIO::ImageBuf to_image_buf(Rgb8View view) {
+  require_rgb8_size(view);
   OIIO::ImageBuf image(OIIO::ImageSpec(view.width, view.height, 3, OIIO::TypeDesc::UINT8));
   image.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, view.rgb.data());
   return image;
+}
+
+io::Rgb8Image to_rgb8(const OIIO::ImageBuf& image) {
+  const OIIO::ImageSpec& spec = image.spec();
+  io::Rgb8Image rgb8;
+  rgb8.width = spec.width;
+  rgb8.height = spec.height;
+  rgb8.rgb.resize(static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height) * 3);
+  image.get_pixels(OIIO::ROI::All(), OIIO::TypeDesc::UINT8, rgb8.rgb.data());
+  return rgb8;
 }
 
 void require_same_size(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b) {

@@ -1,11 +1,14 @@
-// Files a scene names: where they are, the first check on each (it must
-// exist and be a file), so the error says "no such file" rather than a
-// library's guess, and errors that name both the scene and the file.
+// Files a scene names: where they are, and reading them through host_tools/io
+// (regular files only, within a size limit), so the error says "no such file"
+// or "got a FIFO" rather than a library's guess, and errors that name both
+// the scene and the file.
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
+#include "io/read_file.hpp"
 #include "scene/scene.hpp"
 
 namespace spanlight::scene::detail {
@@ -27,8 +30,15 @@ auto load_asset(const std::filesystem::path& scene_file, Load&& load) -> decltyp
   }
 }
 
-// Throws SceneError(file, field, ...) unless file is an existing regular file.
-// kind names it in the message: "scene file", "OBJ file", "image file".
-void require_regular_file(const std::filesystem::path& file, std::string_view field, std::string_view kind);
+// Runs read(), an io reader of `file`, turning its io::ReadError into a SceneError
+// naming the file and `field`: "FILE: FIELD: expected ..., got ...".
+template <typename Read>
+auto read_for_field(const std::filesystem::path& file, std::string_view field, Read&& read) -> decltype(read()) {
+  try {
+    return read();
+  } catch (const io::ReadError& error) {
+    throw SceneError(file.string(), std::string(field), error.expected());
+  }
+}
 
 }  // namespace spanlight::scene::detail

@@ -1,4 +1,5 @@
-// Reads an image file with OpenImageIO into an 8-bit RGB Image, top row first.
+// Reads an image file into an 8-bit RGB Image, top row first (io::read_rgb8_image:
+// grey expanded, alpha dropped, 16-bit rounded, 1..4096 texels a side).
 #pragma once
 
 #include <filesystem>

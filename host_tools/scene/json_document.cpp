@@ -1,7 +1,5 @@
 #include "json_document.hpp"
 
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "field_path.hpp"
@@ -12,15 +10,20 @@
 namespace spanlight::scene::detail {
 namespace {
 
+// An inline object at prepare's limit of 65535 vertices, with uvs and ~2^17
+// triangles, is about 7 MB written out: two fit. Larger geometry belongs in OBJ
+// files. (An animation file's key frames are far smaller.)
+constexpr std::uintmax_t max_document_bytes = 16 * io::mebibyte;
+
+// The deepest a valid scene nests is 5 ("objects[0].positions[0][0]"); the parser
+// stops long before a hostile file's 100000 levels cost time or memory.
+constexpr int max_nesting = 32;
+
 std::string read_text(const std::filesystem::path& file, std::string_view kind) {
-  require_regular_file(file, root_field_name, kind);
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in || !text) {
-    throw SceneError(file.string(), std::string(root_field_name), "expected a readable " + std::string(kind) + ", got a read error");
-  }
-  return text.str();
+  std::string text =
+      read_for_field(file, root_field_name, [&] { return io::read_regular_file(file, kind, max_document_bytes); });
+  if (text.empty()) throw SceneError(file.string(), std::string(root_field_name), "expected a JSON object, got an empty file");
+  return text;
 }
 
 // nlohmann's messages start with "[json.exception.parse_error.101] "; the rest
@@ -35,10 +38,17 @@ std::string without_exception_id(const std::string& message) {
 Json read_json_document(const std::filesystem::path& file, std::string_view kind) {
   const std::string text = read_text(file, kind);
   JsonPathTracker tracker;
-  const auto follow_parser = [&](int /*depth*/, Json::parse_event_t event, Json& parsed) {
+  const auto follow_parser = [&](int depth, Json::parse_event_t event, Json& parsed) {
+    const auto start_container = [&](bool is_array) {
+      if (depth >= max_nesting) {  // depth counts the containers around this one
+        throw SceneError(file.string(), tracker.path(),
+                         "expected at most " + std::to_string(max_nesting) + " nested arrays and objects, got more");
+      }
+      tracker.start_container(is_array);
+    };
     switch (event) {
-      case Json::parse_event_t::object_start: tracker.start_container(false); break;
-      case Json::parse_event_t::array_start: tracker.start_container(true); break;
+      case Json::parse_event_t::object_start: start_container(false); break;
+      case Json::parse_event_t::array_start: start_container(true); break;
       case Json::parse_event_t::object_end:
       case Json::parse_event_t::array_end: tracker.end_container(); break;
       case Json::parse_event_t::value: tracker.end_scalar(); break;

@@ -8,6 +8,7 @@
 #include <tiny_obj_loader.h>
 
 #include "file_checks.hpp"
+#include "obj_numbers.hpp"
 
 namespace spanlight::scene::detail {
 namespace {
@@ -78,17 +79,25 @@ class MeshBuilder {
 
 std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
+// 10^6 triangles over prepare's limit of 65535 vertices, every corner written
+// "v/vt", are about 40 MB of OBJ text.
+constexpr std::uintmax_t max_obj_file_bytes = 64 * io::mebibyte;
+
 }  // namespace
 
 Mesh load_obj_mesh(const std::filesystem::path& obj_file, const std::string& field_path) {
   const auto fail = [&](const std::string& message) { throw SceneError(obj_file.string(), field_path, message); };
-  require_regular_file(obj_file, field_path, "OBJ file");
+  const std::string text =
+      read_for_field(obj_file, field_path, [&] { return io::read_regular_file(obj_file, "OBJ file", max_obj_file_bytes); });
+  check_obj_numbers(text, obj_file, field_path);
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // we fan-triangulate ourselves, keeping the file's corner order
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(obj_file.string(), config)) fail("expected a valid OBJ file, got: " + first_line(reader.Error()));
+  // From memory, with no material text: an `mtllib` line opens no other file
+  // (`mtllib /dev/zero` would otherwise be read for ever).
+  if (!reader.ParseFromString(text, "", config)) fail("expected a valid OBJ file, got: " + first_line(reader.Error()));
   // tinyobjloader drops faces of fewer than 3 corners with only a warning.
   if (reader.Warning().find("Degenerated face") != std::string::npos) {
     fail("expected faces of 3 or more vertices, got a face with fewer");
@@ -107,9 +116,9 @@ Mesh load_obj_mesh(const std::filesystem::path& obj_file, const std::string& fie
       first_corner += corner_count;
     }
   }
-  Mesh loaded = builder.take();
-  loaded.file = obj_file;
-  return loaded;
+  Mesh mesh = builder.take();
+  mesh.file = obj_file;
+  return mesh;
 }
 
 }  // namespace spanlight::scene::detail

@@ -2,10 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/read_file.hpp"
 
 namespace spanlight::sweep {
 namespace {
@@ -90,8 +91,7 @@ std::string to_csv(const SweepResult& r) {
 }
 
 SweepResult read_csv(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot read");
+  std::istringstream in(io::read_regular_file(file, "sweep CSV", 16 * io::mebibyte));  // ~300 KB for the default grid
   std::string line;
   if (!std::getline(in, line) || split(line) != csv_columns())
     throw std::runtime_error(file.string() + ": line 1: not a `spanlight sweep` CSV (the header differs)");

@@ -1,8 +1,5 @@
 #include "sweep/report_files.hpp"
 
-#include <fstream>
-#include <stdexcept>
-
 #include "compare/compare.hpp"
 #include "float_model/float_model.hpp"
 #include "prepare/prepare.hpp"
@@ -12,31 +9,14 @@
 #include "sweep/report_tables.hpp"
 
 namespace spanlight::sweep {
-namespace fs = std::filesystem;
-
-void write_text_file(const fs::path& file, const std::string& text) {
-  const fs::path temp = file.string() + ".partial";
-  {
-    std::ofstream out(temp, std::ios::binary);
-    out << text;
-    if (!out.flush()) {
-      std::error_code ignored;
-      fs::remove(temp, ignored);
-      throw std::runtime_error(file.string() + ": cannot write");
-    }
-  }
-  fs::rename(temp, file);
-}
-
 namespace {
 
-void write_png(const fs::path& file, int width, int height, const std::vector<std::uint8_t>& rgb) {
-  std::string error;
-  if (!compare::write_png_atomically(file, width, height, rgb, &error)) throw std::runtime_error(file.string() + ": " + error);
+void write_png(io::OutputFolder& out, const std::string& file, int width, int height, const std::vector<std::uint8_t>& rgb) {
+  out.write(file, compare::png_bytes({width, height, rgb}));
 }
 
 // Re-renders a row's fixed and float frames (cheaper than keeping every frame of the sweep).
-Picture picture_of(const fs::path& dir, const scene::Scene& scene, const SweepResult& r, std::size_t row, PixelFormat format) {
+Picture picture_of(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& r, std::size_t row, PixelFormat format) {
   const SweepConfig& c = r.rows[row].config;
   const scene::Scene filtered = with_filter(scene, c.filter);
   const auto prepared = prepare::prepare_scene(filtered);
@@ -45,36 +25,32 @@ Picture picture_of(const fs::path& dir, const scene::Scene& scene, const SweepRe
   const std::string stem = "images/" + std::to_string(row);
   // One float picture per filter: every row with that filter has the same reference.
   Picture p{row, stem + "-fixed.png", std::string("images/float-") + to_string(c.filter) + ".png", stem + "-diff.png"};
-  write_png(dir / p.fixed_png, fixed.width, fixed.height, fixed.rgb);
-  std::error_code ec;
-  if (!fs::exists(dir / p.float_png, ec)) write_png(dir / p.float_png, reference.width, reference.height, reference.rgb);
-  if (!compare::write_heat_map(compare::Rgb8View{fixed.width, fixed.height, fixed.rgb},
-                               compare::Rgb8View{reference.width, reference.height, reference.rgb}, dir / p.diff_png))
-    throw std::runtime_error((dir / p.diff_png).string() + ": cannot write");
+  write_png(out, p.fixed_png, fixed.width, fixed.height, fixed.rgb);
+  if (!out.has_written(p.float_png)) write_png(out, p.float_png, reference.width, reference.height, reference.rgb);
+  const io::Rgb8Image heat = compare::heat_map(compare::Rgb8View{fixed.width, fixed.height, fixed.rgb},
+                                               compare::Rgb8View{reference.width, reference.height, reference.rgb});
+  write_png(out, p.diff_png, heat.width, heat.height, heat.rgb);
   return p;
 }
 
 }  // namespace
 
-void write_report(const fs::path& dir, const scene::Scene& scene, const SweepResult& r, PixelFormat format,
+void write_report(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& r, PixelFormat format,
                   std::size_t pictures) {
-  std::error_code ec;
-  fs::remove_all(dir / "images", ec);  // pictures of an earlier sweep would be stale
-  fs::create_directories(dir / "images", ec);
-  if (ec) throw std::runtime_error((dir / "images").string() + ": cannot create: " + ec.message());
-  write_text_file(dir / "sweep.csv", to_csv(r));
+  out.remove_earlier_files_under("images");  // pictures of an earlier sweep would be stale
+  out.write("sweep.csv", to_csv(r));
   std::vector<CostAxis> measured;
   for (CostAxis axis : {CostAxis::m7, CostAxis::m0plus, CostAxis::host}) {
     if (!has_cost(r, axis)) continue;
     measured.push_back(axis);
-    write_text_file(dir / ("pareto_" + std::string(axis_slug(axis)) + ".svg"), pareto_svg(r, axis));
+    out.write("pareto_" + std::string(axis_slug(axis)) + ".svg", pareto_svg(r, axis));
   }
   std::vector<Picture> shown;
   const CostAxis pictured = measured.empty() ? CostAxis::host : measured.front();  // M7 when measured
   for (std::size_t row : rows_to_picture(r, pictured, pictures))
-    shown.push_back(picture_of(dir, scene, r, row, format));
-  write_text_file(dir / "report.html", html_report(r, shown));
-  write_text_file(dir / "front.md", markdown_summary(r));
+    shown.push_back(picture_of(out, scene, r, row, format));
+  out.write("report.html", html_report(r, shown));
+  out.write("front.md", markdown_summary(r));
 }
 
 }  // namespace spanlight::sweep

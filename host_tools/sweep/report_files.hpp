@@ -8,18 +8,17 @@
 #pragma once
 
 #include <cstddef>
-#include <filesystem>
 
+#include "io/output_folder.hpp"
 #include "scene/scene.hpp"
 #include "sweep/sweep_result.hpp"
 
 namespace spanlight::sweep {
 
-// Throws std::runtime_error naming the file that could not be written.
-void write_report(const std::filesystem::path& dir, const scene::Scene& scene, const SweepResult& result,
-                  PixelFormat format, std::size_t pictures);
-
-// Writes through a temporary file and a rename. Throws std::runtime_error.
-void write_text_file(const std::filesystem::path& file, const std::string& text);
+// Writes them into `out` (io::OutputFolder: a new folder, or one holding only
+// what spanlight wrote; pictures of an earlier sweep there are removed first).
+// Throws io::OutputError naming the file that could not be written.
+void write_report(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& result, PixelFormat format,
+                  std::size_t pictures);
 
 }  // namespace spanlight::sweep

@@ -11,12 +11,13 @@
 #include <catch2/catch.hpp>
 
 #include "bake/depfile.hpp"
+#include "scene/scene_files.hpp"
 #include "scene/scene.hpp"
 
 namespace fs = std::filesystem;
 using spanlight::bake::depfile_refusal;
 using spanlight::bake::depfile_text;
-using spanlight::bake::files_read;
+using spanlight::scene::files_read;
 
 namespace {
 

@@ -14,7 +14,8 @@ source "$(dirname "$0")/cli_lib.sh"
 
 good_scene="$source_dir/scenes/horizon.json"
 small_png="$source_dir/tests/scene/bad/assets/npot_3x3.png"    # 3 x 3 RGB
-wide_png="$source_dir/tests/scene/bad/assets/wide_4097x1.png"  # 4097 x 1 grey
+other_png="$source_dir/scenes/assets/textures/checker.png"     # 64 x 64 RGB
+wide_png="$source_dir/tests/scene/bad/assets/wide_4097x1.png"  # 4097 x 1 grey: beyond the 4096 limit
 
 # render GOOD_SCENE with extra arguments that must be refused: exit 2, stderr
 # names WHAT, no output written, and an existing output left as it was.
@@ -165,6 +166,30 @@ render_every_knob)
   mapfile -t rendered < <(for k in $(seq 1 "$i"); do echo "knobs_$k.png"; done)
   expect_only_files "$scratch" "${rendered[@]}"
   ;;
+render_inaccurate_knobs_warn)
+  # A reciprocal worse than 2^-11 (no Newton step, table below 12 bits) renders
+  # but warns with its error bound (docs/reciprocal.md: 7.83e-3 for 6 bits, 2.00
+  # texels at 256); every other combination is silent.
+  for knobs in "--table-bits 6 --newton 0" "--table-bits 8 --newton 0" "--table-bits 10 --newton 0"; do
+    # shellcheck disable=SC2086  # the knobs are meant to split
+    run_spanlight render "$good_scene" --out "$scratch/out.png" $knobs
+    expect_status 0
+    expect_stderr_has "warning: $knobs: the per-span divide is off by up to "
+    [[ "$(png_size "$scratch/out.png")" == "320 240" ]] || fail "$knobs: no 320 x 240 PNG despite the warning"
+  done
+  expect_stderr_has "up to 5.0e-04 (relative), 0.13 texel"  # 10 bits: 2^-11 + 2^-16 = 5.04e-4
+  run_spanlight render "$good_scene" --out "$scratch/out.png" --table-bits 6 --newton 0
+  expect_stderr_has "up to 7.8e-03 (relative), 2.00 texel"
+  for knobs in "" "--table-bits 12 --newton 0" "--table-bits 6" "--table-bits 6 --newton 2"; do
+    # shellcheck disable=SC2086
+    run_spanlight render "$good_scene" --out "$scratch/out.png" $knobs
+    expect_status 0
+    [[ -z "$err_text" ]] || fail "'$knobs' should render without a word on stderr, got: $err_text"
+  done
+  run_spanlight bake "$good_scene" --out "$scratch/baked" --table-bits 8 --newton 0
+  expect_status 0
+  expect_stderr_has "warning: --table-bits 8 --newton 0"
+  ;;
 render_replaces_existing_output)
   # A successful render replaces an earlier file of the same name, atomically.
   make_previous_output "$scratch/out.png"
@@ -195,20 +220,24 @@ compare_not_an_image)
   expect_stderr_has "corrupt.png"
   ;;
 compare_different_sizes)
-  run_spanlight compare "$small_png" "$wide_png"
+  run_spanlight compare "$small_png" "$other_png"
   expect_status 2
   expect_stderr_has "differ in size"
   # The rule: a message naming the file(s).
   expect_stderr_has "npot_3x3.png"
-  expect_stderr_has "wide_4097x1.png"
-  run_spanlight compare "$small_png" "$wide_png" --diff "$scratch/heat.png"
+  expect_stderr_has "checker.png"
+  run_spanlight compare "$small_png" "$other_png" --diff "$scratch/heat.png"
   expect_status 2
   expect_only_files "$scratch"
   make_previous_output "$scratch/heat.png"
-  run_spanlight compare "$small_png" "$wide_png" --diff "$scratch/heat.png"
+  run_spanlight compare "$small_png" "$other_png" --diff "$scratch/heat.png"
   expect_status 2
   expect_unchanged_previous_output "$scratch/heat.png"
   expect_only_files "$scratch" heat.png
+  # Beyond 4096 texels a side: refused from the header, before any pixel is decoded.
+  run_spanlight compare "$small_png" "$wide_png"
+  expect_status 2
+  expect_stderr_has "wide_4097x1.png: expected an image of 1..4096 texels a side, got 4097x1"
   ;;
 compare_missing_argument)
   run_spanlight compare "$small_png"

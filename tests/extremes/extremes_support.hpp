@@ -248,7 +248,8 @@ inline void dump(const Both& b, const std::string& name) {
   const compare::Rgb8View fixed{b.fixed.width, b.fixed.height, b.fixed.rgb}, ref{b.ref.width, b.ref.height, b.ref.rgb};
   compare::write_png_atomically(base + "_fixed.png", fixed.width, fixed.height, fixed.rgb);
   compare::write_png_atomically(base + "_float.png", ref.width, ref.height, ref.rgb);
-  compare::write_heat_map(fixed, ref, base + "_diff.png");
+  const io::Rgb8Image heat = compare::heat_map(fixed, ref);
+  compare::write_png_atomically(base + "_diff.png", heat.width, heat.height, heat.rgb);
 }
 
 // Pixels whose largest channel differs by more than `tolerance` between two frames of one size.

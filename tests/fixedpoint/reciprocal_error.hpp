@@ -7,16 +7,13 @@
 #include <random>
 
 #include "fixedpoint/reciprocal.hpp"
+#include "fixedpoint/reciprocal_bound.hpp"
 
 namespace reciprocal_error {
 
-// Proven bound for 32-bit inputs (derivation in docs/reciprocal.md):
-//   e0 = 2^-(B+1) + 2^-16          table seed: half an interval over the midpoint, entry rounding
-//   e_{k+1} = e_k^2 + 2^-29        one Newton step: squares the error, plus < 3 * 2^-31 of truncation
+// Proven bound for 32-bit inputs: fixedpoint/reciprocal_bound.hpp.
 inline long double bound_u32(int table_bits, int newton_steps) {
-  long double e = 1.0L / static_cast<long double>(std::uint64_t{1} << (table_bits + 1)) + 1.0L / 65536.0L;
-  for (int step = 0; step < newton_steps; ++step) e = e * e + 1.0L / static_cast<long double>(std::uint64_t{1} << 29);
-  return e;
+  return fixedpoint::reciprocal_error_bound(table_bits, newton_steps);
 }
 
 // The 64-bit overload first truncates d to its top 32 significant bits (relative

@@ -85,3 +85,15 @@ TEST_CASE("a 16-bit image is rounded to 8 bits", "[scene][image]") {
   write_png<std::uint16_t>(folder.path() / "image.png", 1, 1, 3, {0, 32896, 65535}, OIIO::TypeDesc::UINT16);
   CHECK(load_texture_image(folder).texel(0, 0) == Rgb{0, 128, 255});
 }
+
+TEST_CASE("16-bit channels round to the nearest 8-bit level, v * 255 / 65535", "[scene][image]") {
+  // The spec names channels (grey, RGB, RGBA), not depths; the pipeline's texels are
+  // 8-bit, so deeper files are rounded, the same rule as output files: round(255 * value).
+  const ScratchFolder folder;
+  // 128 and 129 straddle 0.5 levels (0.498, 0.502); 32767 and 32768 straddle 127.5.
+  write_png<std::uint16_t>(folder.path() / "image.png", 2, 1, 3, {128, 129, 32767, 32768, 65534, 1},
+                           OIIO::TypeDesc::UINT16);
+  const Image image = load_texture_image(folder);
+  CHECK(image.texel(0, 0) == Rgb{0, 1, 127});
+  CHECK(image.texel(1, 0) == Rgb{128, 255, 0});
+}

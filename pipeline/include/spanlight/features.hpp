@@ -9,6 +9,7 @@
 // every field reads by name at its point of use: `if constexpr (F.shadows)`.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 
 #include "spanlight/knobs.hpp"
@@ -56,6 +57,9 @@ constexpr bool supports(const Features& f, const Knobs& k) {
   if (f.depth_bits != 0 && f.depth_bits != k.depth_bits) return false;
   return f.table_bits == 0 || (f.table_bits == k.table_bits && f.newton == k.newton);
 }
+
+// Array slots for up to n projectors (at least one: C++ has no empty arrays).
+constexpr std::size_t projector_slots(int n) { return n > 0 ? static_cast<std::size_t>(n) : 1u; }
 
 // Calls fn(j) for each projector j in [begin, end). Unrolled over the
 // compile-time maximum N, so j is a constant in each copy and a walk's

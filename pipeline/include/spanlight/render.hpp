@@ -90,7 +90,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
   const auto divide = divide_for<F>(knobs);
   const DepthFormat<F.depth_bits> depth(knobs.depth_bits);
 
-  Light<DepthT> lights[P > 0 ? P : 1] = {};
+  Light<DepthT> lights[projector_slots(P)] = {};
   for (int j = 0; j < scene.projector_count; ++j) {
     const ProjectorData& p = scene.projectors[j];
     lights[j] = {&p, &scene.textures[p.texture], nullptr};

@@ -10,6 +10,7 @@
 
 #include "fixedpoint/bits.hpp"
 #include "spanlight/1_vertex/transform.hpp"
+#include "spanlight/features.hpp"
 
 namespace spanlight {
 
@@ -17,7 +18,7 @@ template <int MaxProjectors>
 struct ClipVertex {
   Vec4Wide clip;
   std::int32_t u, v;
-  Vec4Wide proj[MaxProjectors > 0 ? MaxProjectors : 1];  // (s, t, r, q), Q31.32
+  Vec4Wide proj[projector_slots(MaxProjectors)];  // (s, t, r, q), Q31.32
 };
 
 // A triangle clipped by 6 planes has at most 3 + 6 vertices.

@@ -8,6 +8,7 @@
 
 #include "fixedpoint/bits.hpp"
 #include "spanlight/1_vertex/clip.hpp"
+#include "spanlight/features.hpp"
 
 namespace spanlight {
 
@@ -19,9 +20,9 @@ template <int P>
 struct TriangleAttributes {
   std::int32_t u0, du1, du2, v0, dv1, dv2;  // texel coordinates * 2^uv_frac_bits (|u| < 2^29)
   // per projector: (s, t, r, q) at vertex 0 and the deltas, normalised so |value| < 2^30
-  std::int32_t proj0[P > 0 ? P : 1][4];
-  std::int32_t proj_d1[P > 0 ? P : 1][4];
-  std::int32_t proj_d2[P > 0 ? P : 1][4];
+  std::int32_t proj0[projector_slots(P)][4];
+  std::int32_t proj_d1[projector_slots(P)][4];
+  std::int32_t proj_d2[projector_slots(P)][4];
 };
 
 // The attributes of the triangle whose vertices `v` are, in setup order.

@@ -69,8 +69,8 @@ struct PixelRun {
   std::uint32_t z;  // Q0.32, at the first pixel
   std::int32_t dz;  // per pixel (wrapping add; the walk keeps the run within [0, z_limit])
   Stepped u, v;
-  Stepped s[P > 0 ? P : 1], t[P > 0 ? P : 1], r[P > 0 ? P : 1];  // Q3.28
-  bool front[P > 0 ? P : 1];  // q > 0 all along the run
+  Stepped s[projector_slots(P)], t[projector_slots(P)], r[projector_slots(P)];  // Q3.28
+  bool front[projector_slots(P)];  // q > 0 all along the run
 };
 
 // Advances a stepped value by `count` pixels: what `count` rounds of the kernel's adds give.
@@ -260,7 +260,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
   }
 
   GroupSpan uv;
-  GroupSpan projector[PS];
+  GroupSpan projector[projector_slots(PS)];
   const int j0 = needs.projector_begin, j1 = needs.projector_end;
   if constexpr (UV || Projectors) {
     const ScreenWeights s1 = screen_weights(t, t.edge[1].value_at(c1), t.edge[2].value_at(c1));

@@ -42,8 +42,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
   constexpr int P = F.max_projectors;
   static_assert(PassKernel<Kernel, P>);
   const std::int64_t guard = guard_band(view.width, view.height);
-  std::uint16_t projector_texels[P > 0 ? P : 1] = {};
-  std::uint8_t projector_texel_bits[P > 0 ? P : 1] = {};
+  std::uint16_t projector_texels[projector_slots(P)] = {};
+  std::uint8_t projector_texel_bits[projector_slots(P)] = {};
   for (int j = 0; j < scene.projector_count && j < P; ++j) {
     const TextureLevel& image = scene.textures[scene.projectors[j].texture].levels[0];
     projector_texels[j] = image.width > image.height ? image.width : image.height;

@@ -295,8 +295,8 @@ struct FusedKernel {
 
   template <int PR, typename Sample>
   [[gnu::always_inline]] void lit(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r, Sample& sample) const {
-    ProjectorValues p[P > 0 ? P : 1];
-    bool on[P > 0 ? P : 1];
+    ProjectorValues p[projector_slots(P)] = {};
+    bool on[projector_slots(P)] = {};
     for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
       p[j] = {r.s[j], r.t[j], r.r[j]};
       on[j] = may_light(r, j, count);

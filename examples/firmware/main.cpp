@@ -21,12 +21,15 @@ std::array<baked::Depth, pixel_count> depth;
 std::array<baked::Depth, baked::shadow_map_texels> shadow_map;
 // Only the multipass needs a tie mask; the fused pass (the default) draws without one.
 std::array<std::uint8_t, baked::features.multipass ? spanlight::tie_mask_bytes(pixel_count) : 0> tie_mask;
+// Each vertex of the largest object once, projected per pass.
+std::array<spanlight::CachedVertex, baked::max_vertex_count> vertices;
 
 }  // namespace
 
 int main() {
   const std::array<std::span<baked::Depth>, baked::projector_count> shadow_maps{shadow_map};
-  const spanlight::FrameTarget<baked::features.format, baked::Depth> target{color, depth, shadow_maps, tie_mask};
+  const spanlight::FrameTarget<baked::features.format, baked::Depth> target{color, depth, shadow_maps, tie_mask,
+                                                                            vertices};
   const spanlight::RenderStatus status =
       spanlight::render_frame<baked::features>(baked::scene, baked::matrices, target, baked::knobs);
   if (status != spanlight::RenderStatus::ok) board_stop(10 + static_cast<int>(status));

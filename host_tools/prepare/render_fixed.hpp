@@ -57,7 +57,8 @@ FixedFrame render_fixed_with_hooks(const PreparedStorage& prepared, const Knobs&
       map_spans[j] = maps[j];
     }
     std::vector<std::uint8_t> tie_mask(tie_mask_bytes(static_cast<std::uint32_t>(pixels)));
-    const FrameTarget<F.format, std::uint32_t> target{color, frame.depth, map_spans, tie_mask};
+    std::vector<CachedVertex> vertices(scene.max_vertex_count);
+    const FrameTarget<F.format, std::uint32_t> target{color, frame.depth, map_spans, tie_mask, vertices};
     const RenderStatus status = render_frame<F>(scene, prepared.matrices, target, knobs, hooks);
     if (status != RenderStatus::ok) throw RenderRefused(status);
     frame.rgb.resize(pixels * 3);

@@ -24,6 +24,7 @@ std::array<Color::Storage, pixel_count * Color::per_pixel> color;
 std::array<baked::Depth, pixel_count> depth;
 std::array<baked::Depth, baked::shadow_map_texels ? baked::shadow_map_texels : 1> shadow_pool;
 std::array<std::uint8_t, baked::features.multipass ? tie_mask_bytes(pixel_count) : 1> tie_mask;
+std::array<CachedVertex, baked::max_vertex_count> vertices;
 std::array<std::uint8_t, std::size_t{baked::width} * 3> line;  // one RGB888 row for the sink
 
 constexpr std::size_t map_slots = baked::projector_count ? baked::projector_count : 1;
@@ -63,7 +64,7 @@ int spanlight::hal::app_main(Args args) {
   const char* out = args.size() > 1 ? args[1] : "frame.ppm";
   const auto maps = shadow_maps();
   const FrameTarget<baked::features.format, baked::Depth> target{color, depth, std::span(maps).first(baked::projector_count),
-                                                                 tie_mask};
+                                                                 tie_mask, vertices};
   CostCounter cost;
   cost.begin();
   const RenderStatus status = render_frame<baked::features>(baked::scene, baked::matrices, target, baked::knobs);

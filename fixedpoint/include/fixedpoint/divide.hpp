@@ -57,3 +57,53 @@ constexpr std::int64_t divide_rounded(std::int64_t n, std::uint32_t d) {
 }
 
 }  // namespace fixedpoint
+
+namespace fixedpoint {
+
+// Floor division of 32-bit values by one divisor, many times: with the core's
+// divide instruction where it has one (Cortex-M3/M4/M7, the host), else by the
+// divisor's reciprocal and an exact correction (Cortex-M0+: no libgcc call).
+// Either way the exact floor(n / d) and n - floor(n / d) * d in [0, d).
+#if defined(__arm__) && !defined(__ARM_FEATURE_IDIV)
+inline constexpr bool has_divide_instruction = false;
+#else
+inline constexpr bool has_divide_instruction = true;
+#endif
+
+struct FloorDivisor {
+  std::uint32_t d;  // in (0, 2^31)
+  Reciprocal y;     // 1/d from below (reciprocal<8, 2>: relative error < 2^-28.9), without a divide instruction
+
+  constexpr explicit FloorDivisor(std::uint32_t divisor) : d(divisor), y{} {
+    if constexpr (!has_divide_instruction) y = reciprocal<8, 2>(divisor);
+  }
+
+  // |n| / d, exactly: q0 = floor(|n| y) <= |n| / d and |n| / d - q0 < 2^31 * 2^-28.9 + 1 < 6.
+  constexpr std::uint32_t unsigned_quotient(std::uint32_t n) const {
+    if constexpr (has_divide_instruction) {
+      return n / d;
+    } else {
+      auto q = static_cast<std::uint32_t>(mul_u32(n, y.mantissa) >> y.shift);
+      std::uint32_t r = n - q * d;
+      while (r >= d) {
+        r -= d;
+        ++q;
+      }
+      return q;
+    }
+  }
+
+  struct Result {
+    std::int32_t quotient, remainder;
+  };
+  constexpr Result floor_div(std::int32_t n) const {
+    const std::uint32_t magnitude = n < 0 ? 0u - static_cast<std::uint32_t>(n) : static_cast<std::uint32_t>(n);
+    const std::uint32_t q = unsigned_quotient(magnitude);
+    const std::uint32_t r = magnitude - q * d;
+    if (n >= 0) return {static_cast<std::int32_t>(q), static_cast<std::int32_t>(r)};
+    if (r == 0) return {-static_cast<std::int32_t>(q), 0};
+    return {-static_cast<std::int32_t>(q) - 1, static_cast<std::int32_t>(d - r)};
+  }
+};
+
+}  // namespace fixedpoint

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 
+#include "spanlight/1_vertex/vertex_cache.hpp"
 #include "spanlight/4_pixel/colour.hpp"
 #include "spanlight/4_pixel/depth.hpp"
 
@@ -21,6 +22,8 @@ struct FrameTarget {
   std::span<const std::span<DepthT>> shadow_maps;
   // The multipass's one bit per pixel of a band (tie_mask_bytes); the fused pass needs none.
   std::span<std::uint8_t> tie_mask;
+  // Each vertex of the largest object once, projected (PreparedScene::max_vertex_count entries).
+  std::span<CachedVertex> vertices;
   // Rows per band: the frame is drawn band by band into the same buffers, each
   // band handed to Hooks::band_done when it is finished. 0: one band, the whole frame.
   std::uint16_t band_rows = 0;

@@ -36,6 +36,7 @@ enum class RenderStatus : std::uint8_t {
   shadow_map_missing,    // a shadowed projector has no map, or one of the wrong size (map_size^2 texels)
   tie_mask_too_small,    // the multipass needs tie_mask_bytes(width * band rows) bytes
   depth_type_too_narrow, // 24-bit depth asked of 16-bit depth storage
+  vertices_too_small,    // the vertex buffer holds fewer than the scene's max_vertex_count
 };
 
 // What each status means, for messages.
@@ -51,6 +52,7 @@ constexpr const char* describe(RenderStatus s) {
     case RenderStatus::shadow_map_missing: return "a shadowed projector has no shadow map of map_size^2 texels";
     case RenderStatus::tie_mask_too_small: return "the multipass's tie mask is smaller than tie_mask_bytes(pixels)";
     case RenderStatus::depth_type_too_narrow: return "24-bit depth needs 32-bit depth storage";
+    case RenderStatus::vertices_too_small: return "the vertex buffer is smaller than the scene's largest object (max_vertex_count)";
   }
   return "unknown status";
 }
@@ -68,6 +70,7 @@ constexpr RenderStatus check_frame(const PreparedScene& scene, const FrameTarget
   const std::uint32_t pixels = std::uint32_t{scene.width} * rows;
   if (target.color.size() < std::size_t{pixels} * Color::per_pixel) return RenderStatus::colour_too_small;
   if (target.depth.size() < pixels) return RenderStatus::depth_too_small;
+  if (target.vertices.size() < scene.max_vertex_count) return RenderStatus::vertices_too_small;
   if (knobs.passes == Passes::multipass && target.tie_mask.size() < tie_mask_bytes(pixels))
     return RenderStatus::tie_mask_too_small;
   for (int j = 0; j < scene.projector_count; ++j) {
@@ -100,7 +103,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
       for (DepthT& d : map) d = static_cast<DepthT>(depth.clear);
       hooks.pass_begin(Pass::shadow_depth, j);
       ShadowDepthKernel<F, DepthT, std::remove_reference_t<Hooks>> kernel{map.data(), depth, hooks};
-      draw_pass<F>(scene, matrices, PassView{p.map_size, p.map_size, j, 0, p.map_size}, knobs, divide, depth.z_limit, kernel, hooks);
+      draw_pass<F>(scene, matrices, PassView{p.map_size, p.map_size, j, 0, p.map_size}, knobs, divide, depth.z_limit, target.vertices.data(), kernel, hooks);
       hooks.pass_end(Pass::shadow_depth, j);
       lights[j].shadow_map = map.data();
     }
@@ -123,7 +126,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
       if constexpr (F.fused) {
         FusedKernel<F, DepthT, H> kernel{band, scene.textures, lights, scene.projector_count, ambient, depth, hooks};
         hooks.pass_begin(Pass::fused, -1);
-        draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, kernel, hooks);
+        draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, target.vertices.data(), kernel, hooks);
         hooks.pass_end(Pass::fused, -1);
       }
     } else if constexpr (F.multipass) {
@@ -132,21 +135,21 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
       };
       DepthAmbientKernel<F, DepthT, H> depth_pass{band, ambient, depth, hooks};
       hooks.pass_begin(Pass::depth_ambient, -1);
-      draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, depth_pass, hooks);
+      draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, target.vertices.data(), depth_pass, hooks);
       hooks.pass_end(Pass::depth_ambient, -1);
       if constexpr (P > 0) {
         for (int j = 0; j < scene.projector_count; ++j) {
           clear_mask();
           LightKernel<F, DepthT, H> light_pass{band, lights[j], j, depth, hooks};
           hooks.pass_begin(Pass::light, j);
-          draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, light_pass, hooks);
+          draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, target.vertices.data(), light_pass, hooks);
           hooks.pass_end(Pass::light, j);
         }
       }
       clear_mask();
       ModulateKernel<F, DepthT, H> modulate_pass{band, scene.textures, depth, hooks};
       hooks.pass_begin(Pass::modulate, -1);
-      draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, modulate_pass, hooks);
+      draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, target.vertices.data(), modulate_pass, hooks);
       hooks.pass_end(Pass::modulate, -1);
     }
     hooks.band_done(y0, rows, target.color.data());

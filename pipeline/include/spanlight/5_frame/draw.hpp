@@ -11,6 +11,8 @@
 #include "spanlight/1_vertex/clip.hpp"
 #include "spanlight/1_vertex/project.hpp"
 #include "spanlight/1_vertex/transform.hpp"
+#include "spanlight/1_vertex/vertex_cache.hpp"
+#include "spanlight/2_triangle/small.hpp"
 #include "spanlight/2_triangle/attributes.hpp"
 #include "spanlight/2_triangle/setup.hpp"
 #include "spanlight/3_span/walk.hpp"
@@ -36,9 +38,100 @@ constexpr std::int64_t guard_band(int width, int height) {
   return g > 6 ? 6 : (g < 1 ? 1 : g);
 }
 
+// Whether a triangle of this object may take the small path in this pass; the
+// same answer in every pass of the frame's eye view (so depth agrees between
+// passes): uv must step affinely in its sampler's scale with fraction bits to
+// spare (a repeating texture, or none), and the eye passes must not need a
+// projector's ratios (the small path interpolates none).
+constexpr bool small_path_allowed(const PreparedScene& scene, const ObjectData& object, const PassView& view) {
+  if (view.light_projector < 0 && scene.projector_count > 0) return false;
+  return object.texture < 0 || scene.textures[object.texture].wrap == Wrap::repeat;
+}
+
+// The largest difference of u or v between two of the triangle's vertices (texels * 2^frac).
+constexpr std::int32_t uv_range(const ObjectData& object, const std::uint32_t (&index)[3]) {
+  std::int32_t range = 0;
+  for (int c = 0; c < 2; ++c) {
+    std::int32_t lo = object.uvs[index[0] * 2 + static_cast<std::uint32_t>(c)], hi = lo;
+    for (int k = 1; k < 3; ++k) {
+      const std::int32_t x = object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)];
+      lo = x < lo ? x : lo;
+      hi = x > hi ? x : hi;
+    }
+    range = hi - lo > range ? hi - lo : range;
+  }
+  return range;
+}
+
+// Depth stays affine within this many Q0.32 units of the vertices' range over a
+// small triangle: the corner's value and the two steps are each floored (one
+// unit), and a pixel is at most 64 steps from the corner each way.
+inline constexpr std::uint32_t small_depth_margin = 256;
+
+// Draws a small triangle (2_triangle/small.hpp): rows by its 32-bit edges, and
+// each span as one run with affine depth and quadratic uv.
+template <int P, typename Kernel, typename Hooks>
+inline void draw_small(const SmallTriangle& t, const ObjectData& object, const std::uint32_t (&index)[3],
+                       const ScreenVertex (&v)[3], const PerspectiveWeights& weights, std::int32_t range,
+                       const SpanNeeds& needs, const PassView& view, Kernel& kernel, Hooks& hooks) {
+  const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
+  const AffineAttribute z = t.affine(v[i0].z, v[i1].z - v[i0].z, v[i2].z - v[i0].z, 2);  // Q1.30 -> Q0.32
+  QuadraticRows uv[2];
+  if (needs.uv) {
+    const AffineAttribute e = t.affine(weights.e[i0], weights.e[i1] - weights.e[i0], weights.e[i2] - weights.e[i0], 0);
+    const auto r0 = static_cast<std::uint32_t>(t.row_begin - t.row0);
+    // |A|, |B| <= 24 D 2^extra < 2^31 over the box (its barycentrics are within [-12, 12]).
+    const int extra_room = 26 - fixedpoint::bit_length(static_cast<std::uint64_t>(range));
+    for (int c = 0; c < 2; ++c) {
+      const int shift = needs.uv_scale.shift[c];
+      const int extra = extra_room < shift ? extra_room : shift;
+      auto at = [&](int k) { return object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)]; };
+      const std::int32_t d1 = at(i1) - at(i0), d2 = at(i2) - at(i0);
+      auto b = [&](std::int32_t d, int k) {  // (u_k - u_0) e_k in exact units * 2^extra
+        return static_cast<std::int32_t>((std::int64_t{d} * weights.e[k]) >> (30 - extra));
+      };
+      const std::uint32_t base = static_cast<std::uint32_t>(at(i0) + needs.uv_scale.offset[c]) << shift;
+      uv[c].start(QuadraticAttribute::of(base, t.affine(0, d1, d2, extra), t.affine(0, b(d1, i1), b(d2, i2), 0), e,
+                                         shift - extra),
+                  r0);
+    }
+  }
+  hooks.triangle_rows();
+  SmallEdge edge[3] = {t.edge[0], t.edge[1], t.edge[2]};
+  PixelRun<P> run;  // only what the pass reads is set: depth, and uv when it needs them (no projector here)
+  run.u = run.v = Stepped{0, 0, 0};
+  auto r = static_cast<std::uint32_t>(t.row_begin - t.row0);
+  for (std::int32_t row = t.row_begin; row < t.row_end; ++row, ++r) {
+    if (row >= view.row_end) return;
+    std::int32_t lo = -t.column0, hi = view.width - 1 - t.column0;  // columns of the view, relative to the corner
+    bool empty = false;
+    for (const SmallEdge& edge_i : edge) {
+      if (edge_i.slope > 0) lo = -edge_i.quotient > lo ? -edge_i.quotient : lo;
+      else if (edge_i.slope < 0) hi = edge_i.quotient < hi ? edge_i.quotient : hi;
+      else empty |= edge_i.row_value < edge_i.bias;
+    }
+    if (!empty && lo <= hi && row >= view.row_begin) {
+      const auto c = static_cast<std::uint32_t>(lo);
+      run.z = z.at_corner + z.per_row * r + z.per_column * c;
+      run.dz = static_cast<std::int32_t>(z.per_column);
+      if (needs.uv) {
+        uv[0].at(c, run.u.value, run.u.step, run.u.curve);
+        uv[1].at(c, run.v.value, run.v.step, run.v.curve);
+      }
+      kernel.run(static_cast<std::uint32_t>((row - view.row_begin) * view.width + t.column0 + lo), hi - lo + 1, run);
+    }
+    for (SmallEdge& edge_i : edge) edge_i.next_row();
+    if (needs.uv) {
+      uv[0].next_row();
+      uv[1].next_row();
+    }
+  }
+}
+
 template <Features F, typename Divide, typename Kernel, typename Hooks>
 inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices, const PassView& view,
-                      const Knobs& knobs, const Divide& divide, std::uint32_t z_limit, Kernel& kernel, Hooks& hooks) {
+                      const Knobs& knobs, const Divide& divide, std::uint32_t z_limit, CachedVertex* cache,
+                      Kernel& kernel, Hooks& hooks) {
   constexpr int P = F.max_projectors;
   static_assert(PassKernel<Kernel, P>);
   const std::int64_t guard = guard_band(view.width, view.height);
@@ -61,50 +154,94 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     const Mat4Block& to_clip = view.light_projector < 0 ? matrices.clip_from_object[o]
                                                         : matrices.light_clip_from_object[o * pc + view.light_projector];
     const Mat4Block* to_projector = matrices.projector_from_object + o * pc;
+    const bool small_allowed = small_path_allowed(scene, object, view);
+    cache_vertices(object, to_clip, view.width, view.height, guard, cache);
+
+    // Stages 2 and 3 for one triangle whose window vertices are known (cached, or cut by the clip stage).
+    auto draw_general = [&](const ScreenVertex (&corners)[3], const ClipVertex<P>* const (&clip_corners)[3]) {
+      TriangleSetup setup{};
+      if (!setup_triangle(corners, object.cull, view.height, setup)) return;
+      if (setup.row_end <= view.row_begin || setup.row_begin >= view.row_end) return;
+      TriangleAttributes<P> attrs{};
+      const ClipVertex<P>* const ordered[3] = {clip_corners[setup.order[0]], clip_corners[setup.order[1]],
+                                               clip_corners[setup.order[2]]};
+      if (needs.uv) set_uv<P>(ordered, attrs);
+      for (int j = needs.projector_begin; j < needs.projector_end; ++j) set_projector<P>(ordered, j, attrs);
+      hooks.triangle_rows();
+      with_walk_shape<Kernel::may_need_uv, (Kernel::may_need_projectors && P > 0)>(needs, [&](auto uv, auto projectors) {
+        rasterize_rows(setup, view.width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
+          if (row < view.row_begin || row >= view.row_end) return;
+          const auto row_start = static_cast<std::uint32_t>((row - view.row_begin) * view.width);
+          walk_span<P, decltype(uv)::value, decltype(projectors)::value>(
+              setup, attrs, needs, control, divide, c0, c1,
+              [&](std::int32_t column, std::int32_t count, const PixelRun<P>& run) SPANLIGHT_LAMBDA_INLINE_ATTR {
+                kernel.run(row_start + static_cast<std::uint32_t>(column), count, run);
+              });
+        });
+      });
+    };
+    auto clip_vertex = [&](std::uint32_t index, ClipVertex<P>& cv) {
+      const std::int32_t* position = object.positions + index * 3;
+      cv.clip = transform(to_clip, position);
+      cv.u = needs.uv ? object.uvs[index * 2] : 0;
+      cv.v = needs.uv ? object.uvs[index * 2 + 1] : 0;
+      for (int j = needs.projector_begin; j < needs.projector_end; ++j) cv.proj[j] = transform(to_projector[j], position);
+    };
 
     for (std::uint32_t tri = 0; tri < object.triangle_count; ++tri) {
       hooks.triangle_begin();
+      const std::uint32_t index[3] = {object.indices[tri * 3], object.indices[tri * 3 + 1], object.indices[tri * 3 + 2]};
+      const CachedVertex& a = cache[index[0]];
+      const CachedVertex& b = cache[index[1]];
+      const CachedVertex& c = cache[index[2]];
+      if (a.outside & b.outside & c.outside) continue;  // all beyond one plane
+      if ((a.outside | b.outside | c.outside) == 0) {
+        const ScreenVertex corners[3] = {a.screen, b.screen, c.screen};
+        if (small_allowed) {
+          SmallTriangle t;
+          bool covers = false;
+          if (setup_small(corners, object.cull, view.height, t, covers)) {
+            if (!covers || t.row_end <= view.row_begin || t.row_begin >= view.row_end) continue;
+            std::uint32_t z_lo = 0xFFFFFFFFu, z_hi = 0;
+            for (const ScreenVertex& s : corners) {
+              const std::uint32_t z = static_cast<std::uint32_t>(s.z) << 2;
+              z_lo = z < z_lo ? z : z_lo;
+              z_hi = z > z_hi ? z : z_hi;
+            }
+            const bool depth_ok = z_lo >= small_depth_margin && z_hi <= z_limit - small_depth_margin;
+            PerspectiveWeights weights{};
+            const std::int32_t range = object.texture < 0 ? 0 : uv_range(object, index);
+            const bool uv_ok = object.texture < 0 ||
+                               (range < (1 << 26) && perspective_weights_of(corners, weights) &&
+                                quadratic_enough(weights, range, object.uv_frac_bits, knobs.tolerance_log2));
+            if (depth_ok && uv_ok) {
+              draw_small<P>(t, object, index, corners, weights, range, needs, view, kernel, hooks);
+              continue;
+            }
+          }
+        }
+        ClipVertex<P> clip[3];
+        for (int k = 0; k < 3; ++k) {
+          clip[k].u = needs.uv ? object.uvs[index[k] * 2] : 0;
+          clip[k].v = needs.uv ? object.uvs[index[k] * 2 + 1] : 0;
+          for (int j = needs.projector_begin; j < needs.projector_end; ++j)
+            clip[k].proj[j] = transform(to_projector[j], object.positions + index[k] * 3);
+        }
+        const ClipVertex<P>* const clip_corners[3] = {&clip[0], &clip[1], &clip[2]};
+        draw_general(corners, clip_corners);
+        continue;
+      }
+      // A vertex beyond a clip plane: the triangle is cut from its positions again.
       ClipPolygon<P> poly{};
       poly.count = 3;
-      for (int k = 0; k < 3; ++k) {
-        const std::uint32_t index = object.indices[tri * 3 + static_cast<std::uint32_t>(k)];
-        const std::int32_t* position = object.positions + index * 3;
-        ClipVertex<P>& cv = poly.v[k];
-        cv.clip = transform(to_clip, position);
-        cv.u = needs.uv ? object.uvs[index * 2] : 0;
-        cv.v = needs.uv ? object.uvs[index * 2 + 1] : 0;
-        for (int j = needs.projector_begin; j < needs.projector_end; ++j) cv.proj[j] = transform(to_projector[j], position);
-      }
+      for (int k = 0; k < 3; ++k) clip_vertex(index[k], poly.v[k]);
       if (!clip_polygon(poly, guard, needs.projector_begin, needs.projector_end)) continue;
-
       ScreenVertex screen[max_clipped_vertices];
       for (int k = 0; k < poly.count; ++k) screen[k] = project(poly.v[k].clip, view.width, view.height);
-
       for (int k = 1; k + 1 < poly.count; ++k) {  // fan over the clipped polygon
         const ScreenVertex corners[3] = {screen[0], screen[k], screen[k + 1]};
-        const ClipVertex<P>* clip_corners[3] = {&poly.v[0], &poly.v[k], &poly.v[k + 1]};
-        TriangleSetup setup{};
-        if (!setup_triangle(corners, object.cull, view.height, setup)) continue;
-        if (setup.row_end <= view.row_begin || setup.row_begin >= view.row_end) continue;
-
-        TriangleAttributes<P> attrs{};
-        const ClipVertex<P>* const ordered[3] = {clip_corners[setup.order[0]], clip_corners[setup.order[1]],
-                                                 clip_corners[setup.order[2]]};
-        if (needs.uv) set_uv<P>(ordered, attrs);
-        for (int j = needs.projector_begin; j < needs.projector_end; ++j) set_projector<P>(ordered, j, attrs);
-        hooks.triangle_rows();
-
-        with_walk_shape<Kernel::may_need_uv, (Kernel::may_need_projectors && P > 0)>(needs, [&](auto uv, auto projectors) {
-          rasterize_rows(setup, view.width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
-            if (row < view.row_begin || row >= view.row_end) return;
-            const auto row_start = static_cast<std::uint32_t>((row - view.row_begin) * view.width);
-            walk_span<P, decltype(uv)::value, decltype(projectors)::value>(
-                setup, attrs, needs, control, divide, c0, c1,
-                [&](std::int32_t column, std::int32_t count, const PixelRun<P>& run) SPANLIGHT_LAMBDA_INLINE_ATTR {
-                  kernel.run(row_start + static_cast<std::uint32_t>(column), count, run);
-                });
-          });
-        });
+        const ClipVertex<P>* const clip_corners[3] = {&poly.v[0], &poly.v[k], &poly.v[k + 1]};
+        draw_general(corners, clip_corners);
       }
     }
   }

@@ -238,9 +238,6 @@ struct FusedKernel {
     return {o.texture >= 0, surface.scale, 0, projector_count};
   }
 
-  // A run goes in pieces of at most 32 pixels: first their depth test, which
-  // leaves a mask of the pixels this surface wins, then the shading of those.
-  // Two short loops keep their values in registers where one would spill.
   template <int PR>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
     bool any_light = false;
@@ -252,79 +249,52 @@ struct FusedKernel {
   }
 
  private:
-  // The depth test of pixels [0, n) (n <= 32) from depth z: bit k of the result is set
-  // where pixel k is nearer than the stored depth, which it then takes.
-  [[gnu::always_inline]] std::uint32_t nearer(std::uint32_t i, std::int32_t n, std::uint32_t z, std::int32_t dz) const {
-    DepthT* d = band.depth + i;
-    std::uint32_t mask = 0;
-    for (std::int32_t k = 0; k < n; ++k) {
-      const std::uint32_t stored = depth.store(z);
-      if (stored < d[k]) {
-        d[k] = static_cast<DepthT>(stored);
-        mask |= std::uint32_t{1} << k;
-        hooks.touched(Pass::fused, i + static_cast<std::uint32_t>(k));
-      }
-      z += static_cast<std::uint32_t>(dz);
-    }
-    return mask;
-  }
-
   // No projector reaches the run: the light is the ambient all along.
   template <int PR, typename Sample>
   [[gnu::always_inline]] void constant_light(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r, Sample& sample) const {
     const Colour light = ambient;
-    auto pieces = [&](auto shade) SPANLIGHT_LAMBDA_INLINE_ATTR {
-      std::uint32_t z = r.z;
-      Stepped u = r.u, v = r.v;
-      for (std::int32_t done = 0; done < count; done += 32) {
-        const std::int32_t n = count - done < 32 ? count - done : 32;
-        std::uint32_t mask = nearer(i + static_cast<std::uint32_t>(done), n, z, r.dz);
-        typename Color::Storage* c = band.color + (i + static_cast<std::uint32_t>(done)) * Color::per_pixel;
-        for (std::int32_t k = 0; k < n; ++k) {
-          if (mask & 1u) Color::store(c + k * Color::per_pixel, shade(sample(u.value, v.value)));
-          mask >>= 1;
-          step(u);
-          step(v);
+    DepthT* d = band.depth + i;
+    typename Color::Storage* c = band.color + i * Color::per_pixel;
+    auto pixels = [&](auto shade) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      for_each_pixel(count, r.z, r.dz, r.u, r.v, [&](std::int32_t k, std::uint32_t z, std::uint32_t u, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
+        const std::uint32_t stored = depth.store(z);
+        if (stored < d[k]) {
+          d[k] = static_cast<DepthT>(stored);
+          hooks.touched(Pass::fused, i + static_cast<std::uint32_t>(k));
+          Color::store(c + k * Color::per_pixel, shade(sample(u, v)));
         }
-        z += static_cast<std::uint32_t>(r.dz) * static_cast<std::uint32_t>(n);
-      }
+      });
     };
-    if (light == white) pieces([](Colour s) SPANLIGHT_LAMBDA_INLINE_ATTR { return s; });  // modulate by white: the surface
-    else pieces([light](Colour s) SPANLIGHT_LAMBDA_INLINE_ATTR { return modulate(light, s); });
+    if (light == white) pixels([](Colour s) SPANLIGHT_LAMBDA_INLINE_ATTR { return s; });  // modulate by white: the surface
+    else pixels([light](Colour s) SPANLIGHT_LAMBDA_INLINE_ATTR { return modulate(light, s); });
   }
 
   template <int PR, typename Sample>
   [[gnu::always_inline]] void lit(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r, Sample& sample) const {
+    DepthT* d = band.depth + i;
+    typename Color::Storage* c = band.color + i * Color::per_pixel;
     ProjectorValues p[projector_slots(P)] = {};
     bool on[projector_slots(P)] = {};
     for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
       p[j] = {r.s[j], r.t[j], r.r[j]};
       on[j] = may_light(r, j, count);
     });
-    std::uint32_t z = r.z;
-    Stepped u = r.u, v = r.v;
-    for (std::int32_t done = 0; done < count; done += 32) {
-      const std::int32_t n = count - done < 32 ? count - done : 32;
-      std::uint32_t mask = nearer(i + static_cast<std::uint32_t>(done), n, z, r.dz);
-      typename Color::Storage* c = band.color + (i + static_cast<std::uint32_t>(done)) * Color::per_pixel;
-      for (std::int32_t k = 0; k < n; ++k) {
-        if (mask & 1u) {
-          Colour light = ambient;
-          for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
-            if (on[j] && p[j].inside()) {
-              const Colour add = projector_light<F.bilinear, F.shadows, F.pcf>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift);
-              if (add != black) light = Color::quantize(add_light(light, add));
-            }
-          });
-          Color::store(c + k * Color::per_pixel, modulate(light, sample(u.value, v.value)));
-        }
-        mask >>= 1;
-        step(u);
-        step(v);
-        for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { p[j].next(); });
+    for_each_pixel(count, r.z, r.dz, r.u, r.v, [&](std::int32_t k, std::uint32_t z, std::uint32_t u, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      const std::uint32_t stored = depth.store(z);
+      if (stored < d[k]) {
+        d[k] = static_cast<DepthT>(stored);
+        hooks.touched(Pass::fused, i + static_cast<std::uint32_t>(k));
+        Colour light = ambient;
+        for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
+          if (on[j] && p[j].inside()) {
+            const Colour add = projector_light<F.bilinear, F.shadows, F.pcf>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift);
+            if (add != black) light = Color::quantize(add_light(light, add));
+          }
+        });
+        Color::store(c + k * Color::per_pixel, modulate(light, sample(u, v)));
       }
-      z += static_cast<std::uint32_t>(r.dz) * static_cast<std::uint32_t>(n);
-    }
+      for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { p[j].next(); });
+    });
   }
 };
 

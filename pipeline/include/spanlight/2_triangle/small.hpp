@@ -1,0 +1,269 @@
+// Stage 2c, small triangles: the triangles a model is made of. When all three
+// vertices are inside the clip planes, the bounding box is under 64 pixels a
+// side and the triangle is flat enough in 1/w that affine interpolation of its
+// uv stays within the knobs' tolerance, setup is done in 32 bits:
+//
+// * edges relative to the box's corner: |dx|, |dy| < 2^14 subpixels and the
+//   corner within 2^14 + 256 of every vertex, so an edge function is below 2^30
+//   and steps by 256 dx < 2^22 a row: exact, with the same top-left rule and
+//   the same pixels as setup.hpp's int64 edges;
+// * one floor division per edge and row step (a divide instruction, or the
+//   divisor's reciprocal on Cortex-M0+): no 64-bit division, no library call;
+// * depth affine across the triangle and uv a quadratic within tolerance (see
+//   QuadraticAttribute), from one product each with the reciprocal of the
+//   area, stepped per row and per pixel with no divide at all;
+// * slivers (a barycentric beyond [-12, 12] somewhere in the box) take the
+//   general path: here every attribute relative to vertex 0 fits 32 bits.
+#pragma once
+
+#include <climits>
+#include <cstdint>
+
+#include "fixedpoint/bits.hpp"
+#include "fixedpoint/divide.hpp"
+#include "fixedpoint/reciprocal.hpp"
+#include "spanlight/1_vertex/project.hpp"
+#include "spanlight/scene.hpp"
+
+namespace spanlight {
+
+inline constexpr std::int32_t small_triangle_extent = 1 << 14;  // subpixels: 64 pixels
+
+// One edge over the rows of a small triangle: E(c) = slope c + row_value >= bias.
+struct SmallEdge {
+  std::int32_t slope, row_value, row_step, bias;
+  std::int32_t quotient, remainder, quotient_step, remainder_step, divisor;  // floor((row_value - bias) / |slope|)
+
+  constexpr void start(std::int32_t ax, std::int32_t ay, std::int32_t bx, std::int32_t by) {
+    const std::int32_t dx = bx - ax, dy = by - ay;
+    bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;  // top-left rule, as Edge::start
+    slope = -256 * dy;
+    row_step = 256 * dx;
+    row_value = dy * ax - dx * ay;  // E at the corner (column 0, row 0 of the box): |.| < 2^29
+    divisor = slope > 0 ? slope : -slope;
+    if (divisor == 0) {
+      quotient = remainder = quotient_step = remainder_step = 0;
+      return;
+    }
+    const fixedpoint::FloorDivisor d(static_cast<std::uint32_t>(divisor));
+    const auto q = d.floor_div(row_value - bias), s = d.floor_div(row_step);
+    quotient = q.quotient;
+    remainder = q.remainder;
+    quotient_step = s.quotient;
+    remainder_step = s.remainder;
+  }
+  constexpr void next_row() {
+    row_value += row_step;
+    if (divisor == 0) return;
+    quotient += quotient_step;
+    remainder += remainder_step;
+    if (remainder >= divisor) {
+      remainder -= divisor;
+      ++quotient;
+    }
+  }
+};
+
+// An attribute affine over the box: value at the corner and per column and row,
+// in its stepping scale (wrapping modulo 2^32).
+struct AffineAttribute {
+  std::uint32_t at_corner, per_column, per_row;
+};
+
+struct SmallTriangle {
+  std::int32_t column0, row0;        // the box's corner (pixel column and row)
+  std::int32_t row_begin, row_end;   // rows to walk, absolute
+  SmallEdge edge[3];
+  std::int32_t e1_corner, e2_corner;  // edge values at the corner (barycentrics' numerators), setup order
+  std::uint32_t area_rcp;            // ~ 2^(30 + area_log2) / D, in (2^30, 2^31] (D = 2 * area, subpixel^2)
+  int area_log2;                     // bit length of D, <= 29
+  std::uint8_t order[3];
+
+  // value(c, r) = a0 + (da1 E1 + da2 E2) / D, in units of the attribute's exact
+  // scale times 2^shift: one 64-bit product for each term, then the reciprocal.
+  constexpr AffineAttribute affine(std::int32_t a0, std::int32_t da1, std::int32_t da2, int shift) const {
+    auto ratio = [&](std::int64_t numerator) {  // floor(numerator / D * 2^shift), |numerator| < 2^62
+      // numerator * rcp / 2^(30 + area_log2 - shift), rcp halved to fit int32: s >= 6 (shift <= 24,
+      // area_log2 >= 1). Beyond 32 bits in two shifts: two floors are the floor of the whole.
+      const int s = 29 + area_log2 - shift;
+      const auto rcp = static_cast<std::int32_t>(area_rcp >> 1);
+      if (s <= 32) return static_cast<std::uint32_t>(fixedpoint::mul_shift_wide(numerator, rcp, s));
+      return static_cast<std::uint32_t>(fixedpoint::mul_shift_wide(numerator, rcp, 32) >> (s - 32));
+    };
+    const std::int64_t corner = std::int64_t{da1} * e1_corner + std::int64_t{da2} * e2_corner;
+    const std::int64_t column = std::int64_t{da1} * edge[1].slope + std::int64_t{da2} * edge[2].slope;
+    const std::int64_t row = std::int64_t{da1} * edge[1].row_step + std::int64_t{da2} * edge[2].row_step;
+    return {(static_cast<std::uint32_t>(a0) << shift) + ratio(corner), ratio(column), ratio(row)};
+  }
+};
+
+// Builds the setup of a small triangle from its snapped window vertices; false
+// when it is not small (the caller takes the general path), and `covers` false
+// when it is culled, has no area or no row (then it draws nothing either way).
+constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, SmallTriangle& t, bool& covers) {
+  covers = false;
+  std::int32_t x_min = in[0].x, x_max = in[0].x, y_min = in[0].y, y_max = in[0].y;
+  for (int i = 1; i < 3; ++i) {
+    x_min = in[i].x < x_min ? in[i].x : x_min;
+    x_max = in[i].x > x_max ? in[i].x : x_max;
+    y_min = in[i].y < y_min ? in[i].y : y_min;
+    y_max = in[i].y > y_max ? in[i].y : y_max;
+  }
+  if (x_max - x_min >= small_triangle_extent || y_max - y_min >= small_triangle_extent) return false;
+  // The corner: the pixel centre at or left of / above the box (|x| < 2^21: >> is floor).
+  t.column0 = (x_min - 128) >> 8;
+  t.row0 = (y_min - 128) >> 8;
+  const std::int32_t ox = t.column0 * 256 + 128, oy = t.row0 * 256 + 128;
+  std::int32_t x[3], y[3];
+  for (int i = 0; i < 3; ++i) {
+    x[i] = in[i].x - ox;  // in [0, 2^14 + 256)
+    y[i] = in[i].y - oy;
+  }
+  std::int32_t area2 = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);  // < 2^29
+  if (area2 == 0) return true;
+  if (cull == Cull::back && area2 > 0) return true;  // clockwise on screen
+  t.order[0] = 0;
+  t.order[1] = area2 > 0 ? 1 : 2;
+  t.order[2] = area2 > 0 ? 2 : 1;
+  if (area2 < 0) area2 = -area2;
+  // Rows whose centres lie in [y_min, y_max], as setup_triangle takes them.
+  std::int32_t r0 = (y_min - 128 + 255) >> 8, r1 = ((y_max - 128) >> 8) + 1;
+  if (r0 < 0) r0 = 0;
+  if (r1 > height) r1 = height;
+  if (r0 >= r1) return true;
+  t.row_begin = r0;
+  t.row_end = r1;
+  for (int i = 0; i < 3; ++i) {
+    const int a = t.order[(i + 1) % 3], b = t.order[(i + 2) % 3];
+    t.edge[i].start(x[a], y[a], x[b], y[b]);
+  }
+  t.e1_corner = t.edge[1].row_value;
+  t.e2_corner = t.edge[2].row_value;
+  // Slivers go the general way: over the box every barycentric must stay within
+  // [-12, 12] (|E_i| <= 12 D at its four corners: E is affine), so that
+  // attributes and their steps, relative to vertex 0, fit the 32-bit units
+  // affine() and QuadraticAttribute keep them in.
+  // In 32 bits: |E| < 2^30 at the corner, |slope| columns and |row_step| rows < 2^28.1 each.
+  const std::int32_t columns = ((x_max - ox) >> 8) + 1, rows = ((y_max - oy) >> 8) + 1;
+  const std::int32_t limit = area2 < (INT32_MAX / 12) ? 12 * area2 : INT32_MAX;
+  for (const SmallEdge& e : t.edge) {
+    const std::int32_t e00 = e.row_value, across = e.slope * columns, down = e.row_step * rows;
+    for (const std::int32_t corner : {e00, e00 + across, e00 + down, e00 + across + down})
+      if (corner > limit || corner < -limit) return false;
+  }
+  // Walk the edges down to the first row.
+  for (std::int32_t r = t.row0; r < r0; ++r)
+    for (SmallEdge& e : t.edge) e.next_row();
+  t.area_log2 = fixedpoint::bit_length(static_cast<std::uint64_t>(area2));
+  t.area_rcp = fixedpoint::reciprocal_normalised<8, 2>(static_cast<std::uint32_t>(area2) << (32 - t.area_log2));  // 2^62 / (D 2^(32 - log))
+  covers = true;
+  return true;
+}
+
+// Perspective-correct uv over a small triangle as a quadratic. With the
+// vertices' perspective weights w_i = w' (1 + e_i) about their mean w', the
+// exact value is u = u_0 + (A + B) / (1 + e), where A = sum l_i (u_i - u_0),
+// B = sum l_i (u_i - u_0) e_i and e = sum l_i e_i are affine on screen. The
+// quadratic q = u_0 + A (1 - e) + B differs from it by
+//   u - q = e (A e - B) / (1 + e),  |u - q| <= 2 D eps^2 / (1 - eps),
+// D the uv range and eps = max |e_i| <= 1/32 (then 2 / (1 - eps) < 3). Along a
+// row it steps with two adds a pixel: q(c + 1) - q(c) = step, step += curve.
+struct PerspectiveWeights {
+  std::int32_t e[3];  // e_i, Q0.30 (|e_i| <= 2^25)
+  std::int32_t largest;
+};
+
+// The e_i of three vertices (input order), or false when one is beyond 1/32.
+constexpr bool perspective_weights_of(const ScreenVertex (&v)[3], PerspectiveWeights& out) {
+  int e_min = v[0].inv_w_exponent;
+  for (const ScreenVertex& s : v) e_min = s.inv_w_exponent < e_min ? s.inv_w_exponent : e_min;
+  std::uint32_t w[3];
+  for (int i = 0; i < 3; ++i) {
+    const int shift = v[i].inv_w_exponent - e_min + 2;  // below 2^30 each: their sum fits 32 bits
+    w[i] = shift >= 32 ? 0u : v[i].inv_w_mantissa >> shift;
+  }
+  const std::uint32_t sum = w[0] + w[1] + w[2];
+  if (sum == 0) return false;
+  const fixedpoint::Reciprocal rcp = fixedpoint::reciprocal<8, 2>(sum);  // relative error < 2^-28.9: it only moves the e_i together
+  out.largest = 0;
+  for (int i = 0; i < 3; ++i) {
+    // 3 w_i / sum - 1 in Q0.30: 3 w_i < 2^32, times the mantissa (< 2^31) over 2^(shift - 30).
+    const std::int64_t ratio = static_cast<std::int64_t>(fixedpoint::mul_u32(3u * w[i], rcp.mantissa) >> (rcp.shift - 30));
+    const std::int64_t e = ratio - (std::int64_t{1} << 30);
+    if (e > (1 << 25) || e < -(1 << 25)) return false;  // |e_i| <= 1/32: |sum l_i e_i| < 2^30.2 with |l_i| <= 12
+    out.e[i] = static_cast<std::int32_t>(e);
+    const std::int32_t m = out.e[i] < 0 ? -out.e[i] : out.e[i];
+    out.largest = m > out.largest ? m : out.largest;
+  }
+  return true;
+}
+
+// Whether the quadratic is within 2^-T texel: 3 D eps^2 <= 2^-T (D in texels * 2^frac).
+constexpr bool quadratic_enough(const PerspectiveWeights& w, std::int32_t uv_range, int frac, int tolerance_log2) {
+  if (tolerance_log2 == 0) return true;
+  const std::uint64_t eps2 = fixedpoint::mul_u32(static_cast<std::uint32_t>(w.largest), static_cast<std::uint32_t>(w.largest)) >> 30;  // Q0.30, < 2^24
+  const std::uint64_t error = 3u * fixedpoint::mul_u32(static_cast<std::uint32_t>(uv_range), static_cast<std::uint32_t>(eps2));
+  const int scale = 30 + frac - tolerance_log2;  // error <= 2^scale
+  return scale >= 63 || error <= (std::uint64_t{1} << scale);
+}
+
+// One coordinate (u or v) over a small triangle as a polynomial in the column
+// c and row r from the corner, in the step scale (wrapping modulo 2^32, as a
+// repeating texture's coordinate does):
+//   q = q00 + q10 c + q01 r + q20 c^2 + q11 c r + q02 r^2,
+// from q = u_0 + A (1 - e) + B with A, B, e affine (each product of an affine
+// term and e is /2^30). The coefficients are rounded in the step scale, at
+// least 2^20 units a texel here (repeating textures only): over the 64 x 64 box
+// the six roundings add below 6 * 2^12 < 2^15 units, 2^-5 of a 2^-10 texel.
+struct QuadraticAttribute {
+  std::uint32_t q00, q10, q01, q20, q11, q02;
+
+  // From the affine A, B (exact units * 2^extra) and e (Q0.30), u_0 in the step scale, to_step = shift - extra.
+  static constexpr QuadraticAttribute of(std::uint32_t base, const AffineAttribute& a, const AffineAttribute& b,
+                                         const AffineAttribute& e, int to_step) {
+    const auto A0 = static_cast<std::int32_t>(a.at_corner), Ac = static_cast<std::int32_t>(a.per_column),
+               Ar = static_cast<std::int32_t>(a.per_row);
+    const auto e0 = static_cast<std::int32_t>(e.at_corner), ec = static_cast<std::int32_t>(e.per_column),
+               er = static_cast<std::int32_t>(e.per_row);
+    const int down = 30 - to_step;  // to_step <= 24
+    auto up = [&](std::uint32_t x) { return x << to_step; };
+    auto product = [&](std::int64_t p) { return static_cast<std::uint32_t>(p >> down); };  // (x e) in the step scale
+    QuadraticAttribute q{};
+    q.q00 = base + up(a.at_corner + b.at_corner) - product(std::int64_t{A0} * e0);
+    q.q10 = up(a.per_column + b.per_column) - product(std::int64_t{Ac} * e0 + std::int64_t{A0} * ec);
+    q.q01 = up(a.per_row + b.per_row) - product(std::int64_t{Ar} * e0 + std::int64_t{A0} * er);
+    q.q20 = 0u - product(std::int64_t{Ac} * ec);
+    q.q11 = 0u - product(std::int64_t{Ac} * er + std::int64_t{Ar} * ec);
+    q.q02 = 0u - product(std::int64_t{Ar} * er);
+    return q;
+  }
+};
+
+// A quadratic attribute walked down the rows: at column 0 of the current row its
+// value and per-row change, and its per-column slope there.
+struct QuadraticRows {
+  std::uint32_t value, down, slope;
+  std::uint32_t q20, q11, q02x2;
+
+  constexpr void start(const QuadraticAttribute& q, std::uint32_t r) {
+    value = q.q00 + q.q01 * r + q.q02 * r * r;
+    down = q.q01 + q.q02 * (2 * r + 1);
+    slope = q.q10 + q.q11 * r;
+    q20 = q.q20;
+    q11 = q.q11;
+    q02x2 = 2 * q.q02;
+  }
+  constexpr void next_row() {
+    value += down;
+    down += q02x2;
+    slope += q11;
+  }
+  // The value, step and curve at column c of this row.
+  constexpr void at(std::uint32_t c, std::uint32_t& v, std::uint32_t& step, std::uint32_t& curve) const {
+    v = value + (slope + q20 * c) * c;
+    step = slope + q20 * (2 * c + 1);
+    curve = 2 * q20;
+  }
+};
+
+}  // namespace spanlight

@@ -16,8 +16,10 @@
 //   general path: here every attribute relative to vertex 0 fits 32 bits.
 #pragma once
 
+#include <algorithm>
 #include <climits>
 #include <cstdint>
+#include <utility>
 
 #include "fixedpoint/bits.hpp"
 #include "fixedpoint/divide.hpp"
@@ -70,30 +72,45 @@ struct AffineAttribute {
   std::uint32_t at_corner, per_column, per_row;
 };
 
+// A barycentric over the box, scaled by 2^26: |value| <= 12 and |steps| <= 24
+// there (setup_small refuses slivers), so each fits 32 bits, and a product with
+// an attribute's difference (|d| < 2^31) fits 64.
+inline constexpr int barycentric_bits = 26;
+struct BarycentricPlane {
+  std::int32_t at_corner, per_column, per_row;
+};
+
 struct SmallTriangle {
   std::int32_t column0, row0;        // the box's corner (pixel column and row)
   std::int32_t row_begin, row_end;   // rows to walk, absolute
   SmallEdge edge[3];
-  std::int32_t e1_corner, e2_corner;  // edge values at the corner (barycentrics' numerators), setup order
-  std::uint32_t area_rcp;            // ~ 2^(30 + area_log2) / D, in (2^30, 2^31] (D = 2 * area, subpixel^2)
-  int area_log2;                     // bit length of D, <= 29
+  std::uint8_t left[2], right[2];    // which edges bound a row from the left, from the right (3: none)
+  std::uint8_t level;                // the horizontal edge (3: none)
+  BarycentricPlane l1, l2;           // of the vertices in setup slots 1 and 2
   std::uint8_t order[3];
 
-  // value(c, r) = a0 + (da1 E1 + da2 E2) / D, in units of the attribute's exact
-  // scale times 2^shift: one 64-bit product for each term, then the reciprocal.
+  // a0 + da1 l1 + da2 l2 in units of the attribute's exact scale times 2^shift
+  // (shift <= 26). The planes' rounding (2^-27 each step) moves a value within
+  // the box by at most (|da1| + |da2|) 130 * 2^-27.
   constexpr AffineAttribute affine(std::int32_t a0, std::int32_t da1, std::int32_t da2, int shift) const {
-    auto ratio = [&](std::int64_t numerator) {  // floor(numerator / D * 2^shift), |numerator| < 2^62
-      // numerator * rcp / 2^(30 + area_log2 - shift), rcp halved to fit int32: s >= 6 (shift <= 24,
-      // area_log2 >= 1). Beyond 32 bits in two shifts: two floors are the floor of the whole.
-      const int s = 29 + area_log2 - shift;
-      const auto rcp = static_cast<std::int32_t>(area_rcp >> 1);
-      if (s <= 32) return static_cast<std::uint32_t>(fixedpoint::mul_shift_wide(numerator, rcp, s));
-      return static_cast<std::uint32_t>(fixedpoint::mul_shift_wide(numerator, rcp, 32) >> (s - 32));
+    const int down = barycentric_bits - shift;
+    auto mix = [&](std::int32_t p1, std::int32_t p2) {
+      return static_cast<std::uint32_t>((std::int64_t{da1} * p1 + std::int64_t{da2} * p2) >> down);
     };
-    const std::int64_t corner = std::int64_t{da1} * e1_corner + std::int64_t{da2} * e2_corner;
-    const std::int64_t column = std::int64_t{da1} * edge[1].slope + std::int64_t{da2} * edge[2].slope;
-    const std::int64_t row = std::int64_t{da1} * edge[1].row_step + std::int64_t{da2} * edge[2].row_step;
-    return {(static_cast<std::uint32_t>(a0) << shift) + ratio(corner), ratio(column), ratio(row)};
+    return {(static_cast<std::uint32_t>(a0) << shift) + mix(l1.at_corner, l2.at_corner), mix(l1.per_column, l2.per_column),
+            mix(l1.per_row, l2.per_row)};
+  }
+
+  // The columns of the row the edges stand at, relative to the corner: [lo, hi], empty if lo > hi.
+  constexpr bool columns(std::int32_t& lo, std::int32_t& hi) const {
+    for (const std::uint8_t i : left)
+      if (i < 3 && -edge[i].quotient > lo) lo = -edge[i].quotient;
+    for (const std::uint8_t i : right)
+      if (i < 3 && edge[i].quotient < hi) hi = edge[i].quotient;
+    return (level == 3 || edge[level].row_value >= edge[level].bias) && lo <= hi;
+  }
+  constexpr void next_row() {
+    for (SmallEdge& e : edge) e.next_row();
   }
 };
 
@@ -102,30 +119,26 @@ struct SmallTriangle {
 // when it is culled, has no area or no row (then it draws nothing either way).
 constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, SmallTriangle& t, bool& covers) {
   covers = false;
-  std::int32_t x_min = in[0].x, x_max = in[0].x, y_min = in[0].y, y_max = in[0].y;
-  for (int i = 1; i < 3; ++i) {
-    x_min = in[i].x < x_min ? in[i].x : x_min;
-    x_max = in[i].x > x_max ? in[i].x : x_max;
-    y_min = in[i].y < y_min ? in[i].y : y_min;
-    y_max = in[i].y > y_max ? in[i].y : y_max;
-  }
+  const std::int32_t x_min = std::min({in[0].x, in[1].x, in[2].x}), x_max = std::max({in[0].x, in[1].x, in[2].x});
+  const std::int32_t y_min = std::min({in[0].y, in[1].y, in[2].y}), y_max = std::max({in[0].y, in[1].y, in[2].y});
   if (x_max - x_min >= small_triangle_extent || y_max - y_min >= small_triangle_extent) return false;
   // The corner: the pixel centre at or left of / above the box (|x| < 2^21: >> is floor).
   t.column0 = (x_min - 128) >> 8;
   t.row0 = (y_min - 128) >> 8;
   const std::int32_t ox = t.column0 * 256 + 128, oy = t.row0 * 256 + 128;
-  std::int32_t x[3], y[3];
-  for (int i = 0; i < 3; ++i) {
-    x[i] = in[i].x - ox;  // in [0, 2^14 + 256)
-    y[i] = in[i].y - oy;
-  }
-  std::int32_t area2 = (x[1] - x[0]) * (y[2] - y[0]) - (y[1] - y[0]) * (x[2] - x[0]);  // < 2^29
+  const std::int32_t x0 = in[0].x - ox, y0 = in[0].y - oy;  // each in [0, 2^14 + 256)
+  std::int32_t x1 = in[1].x - ox, y1 = in[1].y - oy, x2 = in[2].x - ox, y2 = in[2].y - oy;
+  std::int32_t area2 = (x1 - x0) * (y2 - y0) - (y1 - y0) * (x2 - x0);  // < 2^29
   if (area2 == 0) return true;
   if (cull == Cull::back && area2 > 0) return true;  // clockwise on screen
   t.order[0] = 0;
   t.order[1] = area2 > 0 ? 1 : 2;
   t.order[2] = area2 > 0 ? 2 : 1;
-  if (area2 < 0) area2 = -area2;
+  if (area2 < 0) {  // setup order: vertices 0, 2, 1
+    area2 = -area2;
+    std::swap(x1, x2);
+    std::swap(y1, y2);
+  }
   // Rows whose centres lie in [y_min, y_max], as setup_triangle takes them.
   std::int32_t r0 = (y_min - 128 + 255) >> 8, r1 = ((y_max - 128) >> 8) + 1;
   if (r0 < 0) r0 = 0;
@@ -133,29 +146,40 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   if (r0 >= r1) return true;
   t.row_begin = r0;
   t.row_end = r1;
-  for (int i = 0; i < 3; ++i) {
-    const int a = t.order[(i + 1) % 3], b = t.order[(i + 2) % 3];
-    t.edge[i].start(x[a], y[a], x[b], y[b]);
-  }
-  t.e1_corner = t.edge[1].row_value;
-  t.e2_corner = t.edge[2].row_value;
+  // Edge i runs from slot i + 1 to slot i + 2, as in setup_triangle.
+  t.edge[0].start(x1, y1, x2, y2);
+  t.edge[1].start(x2, y2, x0, y0);
+  t.edge[2].start(x0, y0, x1, y1);
   // Slivers go the general way: over the box every barycentric must stay within
-  // [-12, 12] (|E_i| <= 12 D at its four corners: E is affine), so that
-  // attributes and their steps, relative to vertex 0, fit the 32-bit units
-  // affine() and QuadraticAttribute keep them in.
-  // In 32 bits: |E| < 2^30 at the corner, |slope| columns and |row_step| rows < 2^28.1 each.
+  // [-12, 12] (|E_i| <= 12 D at its four corners: E is affine), so that the
+  // planes and the attributes relative to vertex 0 fit 32 bits. In 32 bits:
+  // |E| < 2^30 at the corner, |slope| columns and |row_step| rows < 2^28.1 each.
   const std::int32_t columns = ((x_max - ox) >> 8) + 1, rows = ((y_max - oy) >> 8) + 1;
   const std::int32_t limit = area2 < (INT32_MAX / 12) ? 12 * area2 : INT32_MAX;
-  for (const SmallEdge& e : t.edge) {
+  int lefts = 0, rights = 0;
+  t.left[0] = t.left[1] = t.right[0] = t.right[1] = t.level = 3;
+  for (std::uint8_t i = 0; i < 3; ++i) {
+    const SmallEdge& e = t.edge[i];
     const std::int32_t e00 = e.row_value, across = e.slope * columns, down = e.row_step * rows;
     for (const std::int32_t corner : {e00, e00 + across, e00 + down, e00 + across + down})
       if (corner > limit || corner < -limit) return false;
+    if (e.slope > 0) t.left[lefts++] = i;
+    else if (e.slope < 0) t.right[rights++] = i;
+    else t.level = i;
   }
-  // Walk the edges down to the first row.
-  for (std::int32_t r = t.row0; r < r0; ++r)
-    for (SmallEdge& e : t.edge) e.next_row();
-  t.area_log2 = fixedpoint::bit_length(static_cast<std::uint64_t>(area2));
-  t.area_rcp = fixedpoint::reciprocal_normalised<8, 2>(static_cast<std::uint32_t>(area2) << (32 - t.area_log2));  // 2^62 / (D 2^(32 - log))
+  // The barycentrics' planes: E_i / D, times 2^26. rcp ~ 2^(30 + L) / D (L the bit length of D),
+  // so x / D 2^26 = x rcp / 2^(4 + L); |x| < 2^30 and rcp <= 2^31: the product fits 64 bits.
+  const int area_log2 = fixedpoint::bit_length(static_cast<std::uint64_t>(area2));
+  const std::uint32_t rcp = fixedpoint::reciprocal_normalised<8, 2>(static_cast<std::uint32_t>(area2) << (32 - area_log2));
+  const int shift = 4 + area_log2;
+  auto plane = [&](const SmallEdge& e) {
+    auto scaled = [&](std::int32_t x) { return static_cast<std::int32_t>(fixedpoint::mul_s32_u32(x, rcp) >> shift); };
+    return BarycentricPlane{scaled(e.row_value), scaled(e.slope), scaled(e.row_step)};
+  };
+  t.l1 = plane(t.edge[1]);
+  t.l2 = plane(t.edge[2]);
+  // Walk the edges down to the first row (at most one row but at the frame's top).
+  for (std::int32_t r = t.row0; r < r0; ++r) t.next_row();
   covers = true;
   return true;
 }

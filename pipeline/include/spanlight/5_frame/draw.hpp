@@ -97,30 +97,25 @@ inline void draw_small(const SmallTriangle& t, const ObjectData& object, const s
     }
   }
   hooks.triangle_rows();
-  SmallEdge edge[3] = {t.edge[0], t.edge[1], t.edge[2]};
+  SmallTriangle rows = t;  // its edges step down the rows
   PixelRun<P> run;  // only what the pass reads is set: depth, and uv when it needs them (no projector here)
   run.u = run.v = Stepped{0, 0, 0};
-  auto r = static_cast<std::uint32_t>(t.row_begin - t.row0);
-  for (std::int32_t row = t.row_begin; row < t.row_end; ++row, ++r) {
+  run.dz = static_cast<std::int32_t>(z.per_column);
+  std::uint32_t z_row = z.at_corner + z.per_row * static_cast<std::uint32_t>(t.row_begin - t.row0);
+  for (std::int32_t row = t.row_begin; row < t.row_end; ++row) {
     if (row >= view.row_end) return;
     std::int32_t lo = -t.column0, hi = view.width - 1 - t.column0;  // columns of the view, relative to the corner
-    bool empty = false;
-    for (const SmallEdge& edge_i : edge) {
-      if (edge_i.slope > 0) lo = -edge_i.quotient > lo ? -edge_i.quotient : lo;
-      else if (edge_i.slope < 0) hi = edge_i.quotient < hi ? edge_i.quotient : hi;
-      else empty |= edge_i.row_value < edge_i.bias;
-    }
-    if (!empty && lo <= hi && row >= view.row_begin) {
+    if (rows.columns(lo, hi) && row >= view.row_begin) {
       const auto c = static_cast<std::uint32_t>(lo);
-      run.z = z.at_corner + z.per_row * r + z.per_column * c;
-      run.dz = static_cast<std::int32_t>(z.per_column);
+      run.z = z_row + z.per_column * c;
       if (needs.uv) {
         uv[0].at(c, run.u.value, run.u.step, run.u.curve);
         uv[1].at(c, run.v.value, run.v.step, run.v.curve);
       }
       kernel.run(static_cast<std::uint32_t>((row - view.row_begin) * view.width + t.column0 + lo), hi - lo + 1, run);
     }
-    for (SmallEdge& edge_i : edge) edge_i.next_row();
+    rows.next_row();
+    z_row += z.per_row;
     if (needs.uv) {
       uv[0].next_row();
       uv[1].next_row();
@@ -208,7 +203,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
               z_lo = z < z_lo ? z : z_lo;
               z_hi = z > z_hi ? z : z_hi;
             }
-            const bool depth_ok = z_lo >= small_depth_margin && z_hi <= z_limit - small_depth_margin;
+            // Depth differences below 2^26 (Q0.32): the planes' rounding then stays below 2^26 * 130 * 2^-27 < 65 units.
+            const bool depth_ok = z_lo >= small_depth_margin && z_hi <= z_limit - small_depth_margin && z_hi - z_lo < (1u << 26);
             PerspectiveWeights weights{};
             const std::int32_t range = object.texture < 0 ? 0 : uv_range(object, index);
             const bool uv_ok = object.texture < 0 ||

@@ -24,6 +24,9 @@ struct Features {
   bool bilinear = true;             // some texture (or projector image) is sampled bilinearly
   bool clamped = true;              // some object texture wraps with clamp or border (else repeat only)
   bool tinted = true;               // some textured object has a colour other than white
+  bool trilinear = true;            // some object texture is mipmapped (scene format 2)
+  bool falloff = true;              // some projector's light falls off with its depth (scene format 2)
+  bool facing = true;               // some projector lights only the triangles facing it (scene format 2)
   PixelFormat format = PixelFormat::rgb888;
   bool fused = true;                // the fused pass is linked
   bool multipass = true;            // the paper's passes are linked

@@ -18,7 +18,7 @@ constexpr std::uint8_t repeat_size_of(const TextureLevel& level) {
 constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
   Features f{};
   f.max_projectors = scene.projector_count;
-  f.shadows = f.pcf = f.nearest = f.bilinear = f.clamped = f.tinted = false;
+  f.shadows = f.pcf = f.nearest = f.bilinear = f.clamped = f.tinted = f.trilinear = f.falloff = f.facing = false;
   auto filter_of = [&](const TextureData& t) {
     if (t.filter == Filter::nearest) f.nearest = true;
     else f.bilinear = true;
@@ -30,6 +30,7 @@ constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
     if (object.texture < 0) continue;
     const TextureData& t = scene.textures[object.texture];
     filter_of(t);
+    f.trilinear |= t.filter == Filter::trilinear && t.level_count > 1;
     f.clamped |= t.wrap != Wrap::repeat;
     f.tinted |= !(object.color[0] == 255 && object.color[1] == 255 && object.color[2] == 255);
     if (t.wrap != Wrap::repeat) continue;
@@ -43,6 +44,9 @@ constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
   for (int j = 0; j < scene.projector_count; ++j) {
     const ProjectorData& p = scene.projectors[j];
     filter_of(scene.textures[p.texture]);
+    if (p.falloff >= 0) filter_of(scene.textures[p.falloff]);
+    f.falloff |= p.falloff >= 0;
+    f.facing |= p.facing_only;
     f.shadows |= p.shadows;
     f.pcf |= p.shadows && p.filter == ShadowFilter::pcf2x2;
   }
@@ -66,7 +70,8 @@ constexpr bool covers(const Features& built, const Features& needed) {
   }
   return built.max_projectors >= needed.max_projectors && (built.shadows || !needed.shadows) &&
          (built.pcf || !needed.pcf) && (built.nearest || !needed.nearest) && (built.bilinear || !needed.bilinear) &&
-         (built.clamped || !needed.clamped) && (built.tinted || !needed.tinted) && sizes;
+         (built.clamped || !needed.clamped) && (built.tinted || !needed.tinted) && (built.trilinear || !needed.trilinear) &&
+         (built.falloff || !needed.falloff) && (built.facing || !needed.facing) && sizes;
 }
 
 }  // namespace spanlight

@@ -61,4 +61,12 @@ constexpr void set_projector(const ClipVertex<P>* const (&v)[3], int j, Triangle
   }
 }
 
+// A projector that lights nothing of this triangle (it faces away, facing_only):
+// q = -1 all over, so every pixel is behind the projector and only claimed.
+template <int P>
+constexpr void set_unlit(int j, TriangleAttributes<P>& a) {
+  for (int c = 0; c < 4; ++c) a.proj0[j][c] = a.proj_d1[j][c] = a.proj_d2[j][c] = 0;
+  a.proj0[j][3] = -1;
+}
+
 }  // namespace spanlight

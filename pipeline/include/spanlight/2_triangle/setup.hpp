@@ -67,6 +67,20 @@ struct Edge {
     }
   }
 
+  // The state next_row() would reach after n rows (n >= 0), in one step: the
+  // remainders add to below (n + 1) |slope| < 2^43, so one floor division
+  // carries them into the quotient. A band skips the rows above it this way.
+  constexpr void skip_rows(std::int32_t n) {
+    row_value += row_step * n;
+    if (slope != 0) {
+      const std::int64_t d = slope > 0 ? slope : -slope;
+      const std::int64_t carried = remainder + remainder_step * n;
+      const std::int64_t carry = carried / d;  // both >= 0
+      quotient += quotient_step * n + carry;
+      remainder = carried - carry * d;
+    }
+  }
+
   // |slope| = 256 |dy| < 2^30 (deltas < 2^22, see the top): a 32x32 product.
   constexpr std::int64_t value_at(std::int32_t column) const {
     return fixedpoint::mul_s32(static_cast<std::int32_t>(slope), column) + row_value;

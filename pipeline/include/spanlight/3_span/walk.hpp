@@ -340,10 +340,16 @@ inline void with_walk_shape(const SpanNeeds& needs, Fn&& fn) {
   fn(std::false_type{}, std::false_type{});
 }
 
-// The row loop: each row's covered columns from the three edges' half-planes.
+// The row loop: each row's covered columns from the three edges' half-planes,
+// for the rows of [band_begin, band_end) the triangle covers (the edges jump
+// over the rows above the band).
 template <typename SpanFn>
-inline void rasterize_rows(TriangleSetup& t, int width, SpanFn&& span) {
-  for (std::int32_t row = t.row_begin; row < t.row_end; ++row) {
+inline void rasterize_rows(TriangleSetup& t, int width, std::int32_t band_begin, std::int32_t band_end, SpanFn&& span) {
+  const std::int32_t first = t.row_begin > band_begin ? t.row_begin : band_begin;
+  const std::int32_t last = t.row_end < band_end ? t.row_end : band_end;
+  if (first > t.row_begin)
+    for (Edge& e : t.edge) e.skip_rows(first - t.row_begin);
+  for (std::int32_t row = first; row < last; ++row) {
     std::int64_t lo = 0, hi = width - 1;
     bool empty = false;
     for (const Edge& e : t.edge) {
@@ -358,6 +364,12 @@ inline void rasterize_rows(TriangleSetup& t, int width, SpanFn&& span) {
     if (!empty && lo <= hi) span(row, static_cast<std::int32_t>(lo), static_cast<std::int32_t>(hi));
     for (Edge& e : t.edge) e.next_row();
   }
+}
+
+// Every row of the triangle.
+template <typename SpanFn>
+inline void rasterize_rows(TriangleSetup& t, int width, SpanFn&& span) {
+  rasterize_rows(t, width, t.row_begin, t.row_end, span);
 }
 
 }  // namespace spanlight

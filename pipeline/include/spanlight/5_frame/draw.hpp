@@ -14,6 +14,7 @@
 #include "spanlight/1_vertex/vertex_cache.hpp"
 #include "spanlight/2_triangle/small.hpp"
 #include "spanlight/2_triangle/attributes.hpp"
+#include "spanlight/2_triangle/facing.hpp"
 #include "spanlight/2_triangle/setup.hpp"
 #include "spanlight/3_span/walk.hpp"
 #include "spanlight/5_frame/passes.hpp"
@@ -76,10 +77,13 @@ inline void draw_small(const SmallTriangle& t, const ObjectData& object, const s
                        const SpanNeeds& needs, const PassView& view, Kernel& kernel, Hooks& hooks) {
   const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
   const AffineAttribute z = t.affine(v[i0].z, v[i1].z - v[i0].z, v[i2].z - v[i0].z, 2);  // Q1.30 -> Q0.32
-  QuadraticRows uv[2];
+  // The rows of the band the triangle covers.
+  const std::int32_t first = t.row_begin > view.row_begin ? t.row_begin : view.row_begin;
+  const std::int32_t last = t.row_end < view.row_end ? t.row_end : view.row_end;
+  QuadraticRows uv[2]{};
   if (needs.uv) {
     const AffineAttribute e = t.affine(weights.e[i0], weights.e[i1] - weights.e[i0], weights.e[i2] - weights.e[i0], 0);
-    const auto r0 = static_cast<std::uint32_t>(t.row_begin - t.row0);
+    const auto r0 = static_cast<std::uint32_t>(first - t.row0);
     // |A|, |B| <= 24 D 2^extra < 2^31 over the box (its barycentrics are within [-12, 12]).
     const int extra_room = 26 - fixedpoint::bit_length(static_cast<std::uint64_t>(range));
     for (int c = 0; c < 2; ++c) {
@@ -98,14 +102,13 @@ inline void draw_small(const SmallTriangle& t, const ObjectData& object, const s
   }
   hooks.triangle_rows();
   SmallTriangle rows = t;  // its edges step down the rows
-  PixelRun<P> run;  // only what the pass reads is set: depth, and uv when it needs them (no projector here)
-  run.u = run.v = Stepped{0, 0, 0};
+  for (std::int32_t row = t.row_begin; row < first; ++row) rows.next_row();  // fewer than 64 rows
+  PixelRun<P> run{};  // only what the pass reads is set: depth, and uv when it needs them (no projector here)
   run.dz = static_cast<std::int32_t>(z.per_column);
-  std::uint32_t z_row = z.at_corner + z.per_row * static_cast<std::uint32_t>(t.row_begin - t.row0);
-  for (std::int32_t row = t.row_begin; row < t.row_end; ++row) {
-    if (row >= view.row_end) return;
+  std::uint32_t z_row = z.at_corner + z.per_row * static_cast<std::uint32_t>(first - t.row0);
+  for (std::int32_t row = first; row < last; ++row) {
     std::int32_t lo = -t.column0, hi = view.width - 1 - t.column0;  // columns of the view, relative to the corner
-    if (rows.columns(lo, hi) && row >= view.row_begin) {
+    if (rows.columns(lo, hi)) {
       const auto c = static_cast<std::uint32_t>(lo);
       run.z = z_row + z.per_column * c;
       if (needs.uv) {
@@ -161,11 +164,21 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       const ClipVertex<P>* const ordered[3] = {clip_corners[setup.order[0]], clip_corners[setup.order[1]],
                                                clip_corners[setup.order[2]]};
       if (needs.uv) set_uv<P>(ordered, attrs);
-      for (int j = needs.projector_begin; j < needs.projector_end; ++j) set_projector<P>(ordered, j, attrs);
+      for (int j = needs.projector_begin; j < needs.projector_end; ++j) {
+        if constexpr (F.facing) {
+          // setup's order says the window orientation: order[1] == 1 when the area is positive.
+          if (scene.projectors[j].facing_only &&
+              !faces_projector(setup.order[1] == 1 ? 1 : -1, clip_corners[0]->proj[j], clip_corners[1]->proj[j],
+                               clip_corners[2]->proj[j])) {
+            set_unlit<P>(j, attrs);
+            continue;
+          }
+        }
+        set_projector<P>(ordered, j, attrs);
+      }
       hooks.triangle_rows();
       with_walk_shape<Kernel::may_need_uv, (Kernel::may_need_projectors && P > 0)>(needs, [&](auto uv, auto projectors) {
-        rasterize_rows(setup, view.width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
-          if (row < view.row_begin || row >= view.row_end) return;
+        rasterize_rows(setup, view.width, view.row_begin, view.row_end, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
           const auto row_start = static_cast<std::uint32_t>((row - view.row_begin) * view.width);
           walk_span<P, decltype(uv)::value, decltype(projectors)::value>(
               setup, attrs, needs, control, divide, c0, c1,

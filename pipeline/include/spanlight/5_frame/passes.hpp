@@ -178,7 +178,7 @@ struct LightKernel {
       if (z_equal_and_first(band.depth, band.tie_mask, depth, pixel, z)) {
         hooks.touched(Pass::light, pixel);
         if (lights && p.inside()) {
-          const Colour add = projector_light<F.bilinear, F.shadows, F.pcf>(light, p.s_now(), p.t_now(), p.r_now(), 32 - depth.shift);
+          const Colour add = projector_light<F>(light, p.s_now(), p.t_now(), p.r_now(), 32 - depth.shift);
           if (add != black) {
             typename Color::Storage* c = band.color + pixel * Color::per_pixel;
             Color::store(c, add_light(Color::load(c), add));
@@ -287,7 +287,7 @@ struct FusedKernel {
         Colour light = ambient;
         for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
           if (on[j] && p[j].inside()) {
-            const Colour add = projector_light<F.bilinear, F.shadows, F.pcf>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift);
+            const Colour add = projector_light<F>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift);
             if (add != black) light = Color::quantize(add_light(light, add));
           }
         });

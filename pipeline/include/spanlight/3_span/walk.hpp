@@ -27,6 +27,7 @@
 #include <type_traits>
 
 #include "spanlight/3_span/exact.hpp"
+#include "spanlight/3_span/lod.hpp"
 #include "spanlight/3_span/segments.hpp"
 #include "spanlight/features.hpp"
 
@@ -46,6 +47,7 @@ struct SpanNeeds {
   bool uv;
   StepScale uv_scale;
   int projector_begin, projector_end;
+  bool lod = false;  // the run's mip level (a trilinear texture)
 };
 
 struct SpanControl {
@@ -56,6 +58,7 @@ struct SpanControl {
   const std::uint16_t* projector_texels;  // larger side of each projector's image
   const std::uint8_t* projector_texel_bits;  // log2 of Q3.28 units per texel of each projector's image
   std::uint32_t z_limit;             // DepthFormat::z_limit: the deepest a stepped depth may go
+  const LodPlanes* lod = nullptr;    // the triangle's, when the object is trilinear
 };
 
 // One value along a run: at the first pixel, and how it moves per pixel
@@ -71,6 +74,7 @@ struct PixelRun {
   Stepped u, v;
   Stepped s[projector_slots(P)], t[projector_slots(P)], r[projector_slots(P)];  // Q3.28
   bool front[projector_slots(P)];  // q > 0 all along the run
+  std::int32_t lod;                // lambda at the run's middle pixel, Q.8 (trilinear objects; else 0)
 };
 
 // Advances a stepped value by `count` pixels: what `count` rounds of the kernel's adds give.
@@ -238,8 +242,9 @@ struct GroupSpan {
 
 // Walks columns [c0, c1] of one row, calling run_pixels(first column, count,
 // PixelRun) for runs between events. UV and Projectors are fixed at compile
-// time so that each pass steps only what it reads: a depth pass steps depth alone.
-template <int P, bool UV, bool Projectors, typename Divide, typename RunFn>
+// time so that each pass steps only what it reads: a depth pass steps depth alone;
+// Lod compiles the mip level's computation (a build with trilinear textures).
+template <int P, bool UV, bool Projectors, bool Lod = false, typename Divide, typename RunFn>
 inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
                       const SpanControl& control, const Divide& divide, std::int32_t c0, std::int32_t c1,
                       RunFn&& run_pixels) {
@@ -295,6 +300,9 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
       run.z = z > control.z_limit ? control.z_limit : z;
     }
     const std::int32_t count = run_end - column;
+    if constexpr (UV && Lod) {
+      if (control.lod != nullptr) run.lod = lod_at(*control.lod, t, column + count / 2);
+    }
     run_pixels(column, count, run);
     if (run_end > c1) return;
     const auto n = static_cast<std::uint32_t>(count);

@@ -8,6 +8,7 @@
 
 #include "spanlight/3_span/walk.hpp"
 #include "spanlight/4_pixel/colour.hpp"
+#include "spanlight/4_pixel/mipmap.hpp"
 #include "spanlight/4_pixel/texture.hpp"
 #include "spanlight/features.hpp"
 #include "spanlight/inline.hpp"
@@ -16,7 +17,10 @@
 namespace spanlight {
 
 enum class SurfaceKind : std::uint8_t { colour, nearest_repeat, nearest_clamp, nearest_border, bilinear_repeat,
-                                        bilinear_clamp, bilinear_border };
+                                        bilinear_clamp, bilinear_border, trilinear };
+
+// A texture with more than one level and the trilinear filter (a 1x1 one is bilinear).
+constexpr bool mipmapped(const TextureData& t) { return t.filter == Filter::trilinear && t.level_count > 1; }
 
 struct Surface {
   SurfaceKind kind;
@@ -24,6 +28,7 @@ struct Surface {
   Colour colour;    // the object's colour
   TexelGrid grid;
   StepScale scale;  // how the walk steps uv for this sampler
+  const TextureData* texture;  // for trilinear: its levels
 };
 
 constexpr Surface surface_of(const ObjectData& o, const TextureData* textures) {
@@ -39,7 +44,8 @@ constexpr Surface surface_of(const ObjectData& o, const TextureData* textures) {
   s.grid = texel_grid(t.levels[0], f);
   const int wrap = t.wrap == Wrap::repeat ? 0 : (t.wrap == Wrap::clamp ? 1 : 2);
   const bool bilinear = t.filter != Filter::nearest;
-  s.kind = static_cast<SurfaceKind>((bilinear ? 4 : 1) + wrap);
+  s.kind = mipmapped(t) ? SurfaceKind::trilinear : static_cast<SurfaceKind>((bilinear ? 4 : 1) + wrap);
+  s.texture = &t;
   // Bilinear reads the texels around the point half a texel back (centres at half-integers).
   const std::int32_t back = bilinear ? -(std::int32_t{1} << (f - 1)) : 0;
   if (t.wrap == Wrap::repeat) {  // a fraction of the size in 32 bits: x_shift = 32 - log2 width >= f
@@ -74,9 +80,10 @@ template <Features F, template <int, int> class Sampler, typename Fn>
 }
 
 // Calls fn(sample) with sample(x, y) -> Colour, the surface's sampler of stepped
-// coordinates, instantiated only for the kinds features F allows.
+// coordinates for a run whose lambda is `lod` (trilinear only), instantiated
+// only for the kinds features F allows.
 template <Features F, typename Fn>
-[[gnu::always_inline]] inline void with_sampler(const Surface& s, Fn&& fn) {
+[[gnu::always_inline]] inline void with_sampler(const Surface& s, std::int32_t lod, Fn&& fn) {
   const TexelGrid g = s.grid;  // by value: the run loop keeps it in registers
   auto sampled = [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
     if constexpr (F.tinted) {
@@ -116,6 +123,9 @@ template <Features F, typename Fn>
       break;
     case SurfaceKind::nearest_border:
       if constexpr (F.nearest && F.clamped) return sampled([g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest<Wrap::border>(g, as_signed(x), as_signed(y)); });
+      break;
+    case SurfaceKind::trilinear:
+      if constexpr (F.trilinear) return sampled(TrilinearSampler::of(*s.texture, g, lod));
       break;
   }
 }

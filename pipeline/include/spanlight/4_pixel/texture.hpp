@@ -119,27 +119,33 @@ struct NearestRepeatOfSize {
 
 // Clamp to edge: beyond the centres of the outer texels the edge texel alone
 // (x0 in [0, width - 1]; the frame holds column `width` for the zero weight).
-[[gnu::always_inline]] inline Colour bilinear_clamp(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+[[gnu::always_inline]] inline BilinearSums bilinear_clamp_sums(const TexelGrid& g, std::int32_t x, std::int32_t y) {
   const std::int32_t x_max = (g.width - 1) << g.frac, y_max = (g.height - 1) << g.frac;
   x = x < 0 ? 0 : (x > x_max ? x_max : x);
   y = y < 0 ? 0 : (y > y_max ? y_max : y);
   const int weight_shift = g.frac - 8;
-  return round_sums(footprint_sums({g.texels + (y >> g.frac) * g.stride + (x >> g.frac),
-                                    (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
-                                    (static_cast<std::uint32_t>(y) >> weight_shift) & 255u}, g.stride));
+  return footprint_sums({g.texels + (y >> g.frac) * g.stride + (x >> g.frac),
+                         (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
+                         (static_cast<std::uint32_t>(y) >> weight_shift) & 255u}, g.stride);
+}
+[[gnu::always_inline]] inline Colour bilinear_clamp(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+  return round_sums(bilinear_clamp_sums(g, x, y));
 }
 
 // Border on an object's texture, where the coordinate may lie anywhere: texels
 // outside the image are black. Out of line: rare, and bulky inlined.
-[[gnu::noinline]] inline Colour bilinear_border(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+[[gnu::noinline]] inline BilinearSums bilinear_border_sums(const TexelGrid& g, std::int32_t x, std::int32_t y) {
   const std::int32_t x0 = x >> g.frac, y0 = y >> g.frac;
   auto at = [&](std::int32_t xi, std::int32_t yi) -> std::uint32_t {
     return xi < 0 || yi < 0 || xi >= g.width || yi >= g.height ? 0u : g.texels[yi * g.stride + xi];
   };
   const int weight_shift = g.frac - 8;
-  return round_sums(bilinear_sums(at(x0, y0), at(x0 + 1, y0), at(x0, y0 + 1), at(x0 + 1, y0 + 1),
-                                  (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
-                                  (static_cast<std::uint32_t>(y) >> weight_shift) & 255u));
+  return bilinear_sums(at(x0, y0), at(x0 + 1, y0), at(x0, y0 + 1), at(x0 + 1, y0 + 1),
+                       (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
+                       (static_cast<std::uint32_t>(y) >> weight_shift) & 255u);
+}
+[[gnu::always_inline]] inline Colour bilinear_border(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+  return round_sums(bilinear_border_sums(g, x, y));
 }
 
 // ---- nearest ------------------------------------------------------------------

@@ -46,7 +46,9 @@ constexpr std::int64_t guard_band(int width, int height) {
 // projector's ratios (the small path interpolates none).
 constexpr bool small_path_allowed(const PreparedScene& scene, const ObjectData& object, const PassView& view) {
   if (view.light_projector < 0 && scene.projector_count > 0) return false;
-  return object.texture < 0 || scene.textures[object.texture].wrap == Wrap::repeat;
+  if (object.texture < 0) return true;
+  const TextureData& t = scene.textures[object.texture];
+  return t.wrap == Wrap::repeat && !mipmapped(t);  // a mip level needs the general walk's lambda
 }
 
 // The largest difference of u or v between two of the triangle's vertices (texels * 2^frac).
@@ -164,6 +166,15 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       const ClipVertex<P>* const ordered[3] = {clip_corners[setup.order[0]], clip_corners[setup.order[1]],
                                                clip_corners[setup.order[2]]};
       if (needs.uv) set_uv<P>(ordered, attrs);
+      LodPlanes lod{};
+      control.lod = nullptr;
+      if constexpr (F.trilinear) {
+        if (needs.lod) {
+          const ScreenVertex* const at[3] = {&corners[setup.order[0]], &corners[setup.order[1]], &corners[setup.order[2]]};
+          lod = lod_planes(setup, at, {0, attrs.du1, attrs.du2}, {0, attrs.dv1, attrs.dv2}, object.uv_frac_bits);
+          control.lod = &lod;
+        }
+      }
       for (int j = needs.projector_begin; j < needs.projector_end; ++j) {
         if constexpr (F.facing) {
           // setup's order says the window orientation: order[1] == 1 when the area is positive.
@@ -180,7 +191,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       with_walk_shape<Kernel::may_need_uv, (Kernel::may_need_projectors && P > 0)>(needs, [&](auto uv, auto projectors) {
         rasterize_rows(setup, view.width, view.row_begin, view.row_end, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
           const auto row_start = static_cast<std::uint32_t>((row - view.row_begin) * view.width);
-          walk_span<P, decltype(uv)::value, decltype(projectors)::value>(
+          lod.row_y = row * 256 + 128;
+          walk_span<P, decltype(uv)::value, decltype(projectors)::value, F.trilinear>(
               setup, attrs, needs, control, divide, c0, c1,
               [&](std::int32_t column, std::int32_t count, const PixelRun<P>& run) SPANLIGHT_LAMBDA_INLINE_ATTR {
                 kernel.run(row_start + static_cast<std::uint32_t>(column), count, run);

@@ -201,11 +201,11 @@ struct ModulateKernel {
   Surface surface{};
   SpanNeeds object(const ObjectData& o) {
     surface = surface_of(o, textures);
-    return {o.texture >= 0, surface.scale, 0, 0};
+    return {o.texture >= 0, surface.scale, 0, 0, surface.kind == SurfaceKind::trilinear};
   }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
-    with_sampler<F>(surface, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    with_sampler<F>(surface, r.lod, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
       for_each_pixel(count, r.z, r.dz, r.u, r.v, [&](std::int32_t k, std::uint32_t z, std::uint32_t u, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
         const std::uint32_t pixel = i + static_cast<std::uint32_t>(k);
         if (z_equal_and_first(band.depth, band.tie_mask, depth, pixel, z)) {
@@ -235,14 +235,14 @@ struct FusedKernel {
   Surface surface{};
   SpanNeeds object(const ObjectData& o) {
     surface = surface_of(o, textures);
-    return {o.texture >= 0, surface.scale, 0, projector_count};
+    return {o.texture >= 0, surface.scale, 0, projector_count, surface.kind == SurfaceKind::trilinear};
   }
 
   template <int PR>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
     bool any_light = false;
     for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { any_light |= may_light(r, j, count); });
-    with_sampler<F>(surface, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    with_sampler<F>(surface, r.lod, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
       if (!any_light) constant_light(i, count, r, sample);
       else lit(i, count, r, sample);
     });

@@ -1,4 +1,4 @@
-// The parsed, validated scene file (spec: shared/spec/scene-format.md, version 1).
+// The parsed, validated scene file (spec: docs/scene-format.md, versions 1 and 2).
 // Host only: doubles and std::vector are fine here. Every error with file and
 // field path comes from load_scene(), before anything is rendered.
 #pragma once

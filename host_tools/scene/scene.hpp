@@ -15,10 +15,12 @@
 
 namespace spanlight::scene {
 
-enum class Filter { nearest, bilinear };
+enum class Filter { nearest, bilinear, trilinear };  // trilinear: v2, mipmapped (mip_chain.hpp)
 enum class Wrap { repeat, clamp, border };
 enum class Cull { none, back };
 enum class ShadowFilter { nearest, pcf2x2 };
+enum class TexgenSpace { object, eye };     // v2: planes applied to object or camera-eye coordinates
+enum class ProjectorSpace { world, camera };  // v2: camera: eye/target/up given in the camera's eye space
 
 // 8-bit RGB, top row first (as in the file). Grey is expanded, alpha dropped.
 struct Image {
@@ -53,13 +55,21 @@ struct Mesh {
   std::filesystem::path file;  // the OBJ file it was read from, resolved; empty for an inline mesh
 };
 
+// v2 objects[].texgen: u = s . (x, y, z, 1), v = t . (x, y, z, 1) of each vertex in object
+// coordinates or in the camera's eye coordinates V_cam * M * v (vertex_uvs computes them).
+struct Texgen {
+  glm::dvec4 s{0.0}, t{0.0};
+  TexgenSpace space = TexgenSpace::object;
+};
+
 struct Object {
   std::string name;
-  Mesh mesh;
+  Mesh mesh;  // with texgen, mesh.uvs are not used (an OBJ's vt is overridden; inline uvs are an error)
   glm::dvec3 color{1.0};
   int texture = -1;  // index into Scene::textures, -1: none
   Cull cull = Cull::none;
   glm::dmat4 model{1.0};  // M = T * Rz * Ry * Rx * S, or the given matrix
+  std::optional<Texgen> texgen;  // v2; none: the mesh's uvs
 };
 
 struct Shadows {
@@ -78,10 +88,14 @@ struct Projector {
   int image = -1;  // index into Scene::textures
   glm::dvec3 color{1.0};
   std::optional<Shadows> shadows;
+  int falloff = -1;           // v2: index into Scene::textures sampled at (r/q, 0.5), clamped; -1: none
+  bool facing_only = false;   // v2: lights a triangle only when it faces the projector and the camera alike
+  ProjectorSpace space = ProjectorSpace::world;  // v2: camera: eye, target, up in the camera's eye space
 };
 
 struct Scene {
   std::filesystem::path file;
+  int version = 1;  // spanlight_scene: 1 or 2
   std::string name;
   int width = 0;
   int height = 0;

@@ -174,8 +174,8 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
 
     out->clip_from_object.push_back(to_mat4_block(view_projection * o.model));
     for (const scene::Projector& p : s.projectors) {
-      out->projector_from_object.push_back(to_mat4_block(scene::projector_texture_matrix(p) * o.model));
-      out->light_clip_from_object.push_back(to_mat4_block(scene::projector_view_projection(p) * o.model));
+      out->projector_from_object.push_back(to_mat4_block(scene::projector_texture_matrix(s.camera, p) * o.model));
+      out->light_clip_from_object.push_back(to_mat4_block(scene::projector_view_projection(s.camera, p) * o.model));
     }
 
     ObjectData d{};

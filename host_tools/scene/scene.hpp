@@ -126,9 +126,20 @@ class SceneError : public std::runtime_error {
 // Parses and validates a scene file; loads its meshes and images. Throws SceneError.
 Scene load_scene(const std::filesystem::path& file);
 
-// The matrices the spec defines, in double (GLM conventions, column-major).
-glm::dmat4 camera_view_projection(const Scene& scene);            // perspective(fovy, w/h, n, f) * lookAt
-glm::dmat4 projector_view_projection(const Projector& projector);  // P_j * V_j
-glm::dmat4 projector_texture_matrix(const Projector& projector);   // B * P_j * V_j, B maps [-1,1] to [0,1]
+// The matrices the spec defines, in double (GLM conventions, column-major); both backends
+// take them from here. A projector's V_j is world-to-projector: for `space: camera` it is
+// lookAt(eye_j, target_j, up_j) * V_cam, so these take the camera. Shadow maps are rendered
+// with projector_view_projection, the same world-to-projector view.
+glm::dmat4 camera_view(const Camera& camera);                    // V_cam = lookAt(eye, target, up)
+glm::dmat4 camera_view_projection(const Scene& scene);           // perspective(fovy, w/h, n, f) * V_cam
+glm::dmat4 projector_view(const Camera& camera, const Projector& projector);             // V_j
+glm::dmat4 projector_view_projection(const Camera& camera, const Projector& projector);  // P_j * V_j
+glm::dmat4 projector_texture_matrix(const Camera& camera, const Projector& projector);   // B * P_j * V_j, B: [-1,1] -> [0,1]
+// The projector's eye in world coordinates: eye_j, or V_cam^-1 * eye_j for `space: camera`.
+glm::dvec3 projector_eye_in_world(const Camera& camera, const Projector& projector);
+
+// An object's uv per vertex: the mesh's, or with texgen u = s . p, v = t . p where p is the
+// vertex (x, y, z, 1) in object coordinates or in eye coordinates V_cam * M * v.
+std::vector<glm::dvec2> vertex_uvs(const Camera& camera, const Object& object);
 
 }  // namespace spanlight::scene

@@ -38,7 +38,7 @@ ObjectRanges object_ranges(const scene::Scene& s, const scene::Object& o) {
     r.textured = true;
     r.texture_width = image.width;
     r.texture_height = image.height;
-    for (const glm::dvec2& uv : o.mesh.uvs)
+    for (const glm::dvec2& uv : scene::vertex_uvs(s.camera, o))
       r.largest_texel = std::max({r.largest_texel, std::fabs(uv.x * image.width), std::fabs(uv.y * image.height)});
   }
   return r;
@@ -52,7 +52,7 @@ ProjectorRanges projector_ranges(const scene::Scene& s, const scene::Projector& 
     r.bias = p.shadows->bias;
     r.map_size = p.shadows->map_size;
   }
-  const glm::dmat4 texture = scene::projector_texture_matrix(p);
+  const glm::dmat4 texture = scene::projector_texture_matrix(s.camera, p);
   for (const scene::Object& o : s.objects) {
     for (const glm::dvec3& position : o.mesh.positions) {
       const glm::dvec4 strq = texture * o.model * glm::dvec4(position, 1.0);

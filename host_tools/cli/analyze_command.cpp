@@ -96,7 +96,7 @@ Command add_analyze_command(CLI::App& app) {
   auto a = std::make_shared<AnalyzeArgs>();
   CLI::App* cmd = app.add_subcommand("analyze", "what a scene needs (features, ranges, formats) and the cheapest "
                                                 "configuration meeting an accuracy target");
-  cmd->add_option("scene", a->scene, "scene file")->required();
+  cmd->add_option("scene", a->scene, "scene file (JSON, see docs/scene-format.md)")->required();
   auto* max_error = cmd->add_option("--max-error-lsb", a->max_error_lsb, "largest error allowed at any pixel, 8-bit levels")
                         ->check(CLI::Range(0.0, 255.0));
   cmd->add_option("--min-psnr", a->min_psnr, "lowest PSNR allowed against the float model, dB")

@@ -69,7 +69,7 @@ int run_bake(const BakeArgs& a) {
 Command add_bake_command(CLI::App& app) {
   auto args = std::make_shared<BakeArgs>();
   CLI::App* cmd = app.add_subcommand("bake", "write a scene as C++ sources (baked_scene.cpp, baked_config.hpp) for firmware");
-  cmd->add_option("scene", args->scene, "scene file")->required();
+  cmd->add_option("scene", args->scene, "scene file (JSON, see docs/scene-format.md)")->required();
   cmd->add_option("--out", args->out, "output folder: new, empty, or holding only what spanlight wrote there")->required();
   cmd->add_flag("--force", args->force, "write into --out even when it holds other files (none is removed)");
   cmd->add_option("--depfile", args->depfile,

@@ -75,7 +75,7 @@ int run_sweep_command(const SweepArgs& a) {
 Command add_sweep_command(CLI::App& app) {
   auto a = std::make_shared<SweepArgs>();
   CLI::App* cmd = app.add_subcommand("sweep", "render a scene over a grid of knobs; record accuracy, cost and memory");
-  cmd->add_option("scene", a->scene, "scene file")->required();
+  cmd->add_option("scene", a->scene, "scene file (JSON, see docs/scene-format.md)")->required();
   cmd->add_option("--out", a->out,
                   "output folder (sweep.csv, report.html, front.md, SVG plots, images/): new, empty, or holding only "
                   "what spanlight wrote there")

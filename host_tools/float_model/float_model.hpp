@@ -5,8 +5,9 @@
 //   clip.hpp        near/far planes in clip space, fan triangulation
 //   setup.hpp       window coordinates, snap to 1/256 px, edge functions, top-left rule
 //   raster.hpp      covered pixels, depth and perspective-correct weights
-//   sample.hpp      nearest/bilinear texels, wrap modes, t = 0 at the bottom
+//   sample.hpp      nearest/bilinear/trilinear texels, wrap modes, t = 0 at the bottom, falloff
 //   shadow_map.hpp  depth maps from the projectors, nearest and pcf2x2 compares
+//   facing.hpp      facing_only: which projectors a triangle faces
 //   shade.hpp       light * surface
 //   render.cpp      the frame: shadow passes, visibility, shading
 #pragma once

@@ -18,6 +18,19 @@ glm::dvec4 interpolate_projector(const ClipTriangle& triangle, const Fragment& f
   return strq;
 }
 
+UvDerivatives uv_derivatives(const ClipTriangle& triangle, const Fragment& fragment) {
+  double d = 0.0;  // D = sum lambda_i / w_i
+  for (std::size_t i = 0; i < 3; ++i) d += fragment.lambda[i] / triangle[i].position.w;
+  const glm::dvec2 uv = interpolate_uv(triangle, fragment);
+  UvDerivatives out{glm::dvec2(0.0), glm::dvec2(0.0)};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const glm::dvec2 toward = (triangle[i].uv - uv) / (triangle[i].position.w * d);
+    out.d_dx += fragment.dlambda_dx[i] * toward;
+    out.d_dy += fragment.dlambda_dy[i] * toward;
+  }
+  return out;
+}
+
 namespace {
 
 // floor(a / b) for b > 0, also for negative a.
@@ -72,10 +85,20 @@ void rasterize_clipped(const ClipTriangle& triangle, Viewport viewport, scene::C
   const std::array<std::size_t, 3> source = oriented->swapped ? std::array<std::size_t, 3>{0, 2, 1}
                                                               : std::array<std::size_t, 3>{0, 1, 2};
   const double twice_area = static_cast<double>(oriented->twice_area);
+  // Oriented vertex k's weight is its opposite edge's value, the edge a = v[k+1] -> b = v[k+2]:
+  // dE/dx = -(b.y - a.y), dE/dy = b.x - a.x per subpixel, times 256 per pixel.
+  std::array<double, 3> dlambda_dx{}, dlambda_dy{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const SnappedVertex& a = oriented->v[(k + 1) % 3];
+    const SnappedVertex& b = oriented->v[(k + 2) % 3];
+    const double per_pixel = static_cast<double>(subpixels_per_pixel) / twice_area;
+    dlambda_dx[source[k]] = -static_cast<double>(b.y - a.y) * per_pixel;
+    dlambda_dy[source[k]] = static_cast<double>(b.x - a.x) * per_pixel;
+  }
 
   for_each_covered_pixel(*oriented, viewport.width, viewport.height,
                          [&](int px, int py, const std::array<EdgeValue, 3>& edges) {
-    Fragment fragment{px, py, 0.0, {}, {}};
+    Fragment fragment{px, py, 0.0, {}, {}, dlambda_dx, dlambda_dy};
     for (std::size_t k = 0; k < 3; ++k) fragment.lambda[source[k]] = static_cast<double>(edges[k]) / twice_area;
 
     double sum_over_w = 0.0;

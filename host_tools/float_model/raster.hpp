@@ -8,6 +8,12 @@
 //   depth    = sum lambda_i * z_window_i         linear in screen space
 //   beta_i   = (lambda_i / w_i) / sum_k (lambda_k / w_k)   perspective-correct weights
 //   uv, (s, t, r, q) = sum beta_i * attribute_i
+//
+// Screen derivatives of uv (for the mipmap level of detail) come from the same
+// mapping: uv = N / D with N = sum lambda_i uv_i / w_i and D = sum lambda_i / w_i,
+// both affine in the pixel position, so
+//   d uv / dx = sum_i (d lambda_i / dx) / w_i * (uv_i - uv) / D     (likewise for y),
+// exact at the pixel centre; d lambda_i / dx is a constant of the snapped triangle.
 #pragma once
 
 #include <array>
@@ -32,10 +38,17 @@ struct Fragment {
   double depth;                  // window depth, sum lambda_i z_i
   std::array<double, 3> lambda;  // screen-space barycentrics
   std::array<double, 3> beta;    // perspective-correct barycentrics
+  std::array<double, 3> dlambda_dx, dlambda_dy;  // d lambda_i per pixel (y down), constant over the triangle
+};
+
+// d uv / dx and d uv / dy at the fragment, in uv units per pixel (y down).
+struct UvDerivatives {
+  glm::dvec2 d_dx, d_dy;
 };
 
 glm::dvec2 interpolate_uv(const ClipTriangle& triangle, const Fragment& fragment);
 glm::dvec4 interpolate_projector(const ClipTriangle& triangle, const Fragment& fragment, std::size_t projector);
+UvDerivatives uv_derivatives(const ClipTriangle& triangle, const Fragment& fragment);
 
 // Called once per covered pixel with the (clipped) triangle it came from.
 using FragmentVisitor = std::function<void(const ClipTriangle&, const Fragment&)>;

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "scene/mip_chain.hpp"
 
 namespace spanlight::float_model {
 
@@ -63,8 +66,44 @@ glm::dvec3 sample(const scene::Image& image, scene::Filter filter, scene::Wrap w
   return filter == scene::Filter::nearest ? sample_nearest(image, wrap, uv) : sample_bilinear(image, wrap, uv);
 }
 
+double level_of_detail(glm::dvec2 duv_dx, glm::dvec2 duv_dy, int width, int height) {
+  const glm::dvec2 size(width, height);
+  const double rho = std::max(glm::length(duv_dx * size), glm::length(duv_dy * size));
+  return rho > 0.0 ? std::log2(rho) : -std::numeric_limits<double>::infinity();
+}
+
+glm::dvec3 sample_trilinear(const std::vector<scene::Image>& chain, scene::Wrap wrap, glm::dvec2 uv, double lambda) {
+  if (!(lambda > 0.0)) return sample_bilinear(chain.front(), wrap, uv);  // also for NaN
+  const auto last = static_cast<double>(chain.size() - 1);
+  const double d = std::min(lambda, last);
+  const double level = std::floor(d);
+  const double f = d - level;
+  const auto lower = static_cast<std::size_t>(level);
+  const std::size_t upper = std::min(lower + 1, chain.size() - 1);
+  return (1.0 - f) * sample_bilinear(chain[lower], wrap, uv) + f * sample_bilinear(chain[upper], wrap, uv);
+}
+
+MipChains mip_chains(const scene::Scene& scene) {
+  MipChains chains;
+  for (const scene::Texture& texture : scene.textures) {
+    chains.push_back(texture.filter == scene::Filter::trilinear ? scene::mip_chain(texture.image)
+                                                                : std::vector<scene::Image>{});
+  }
+  return chains;
+}
+
 glm::dvec3 sample_texture(const scene::Texture& texture, glm::dvec2 uv) {
   return sample(texture.image, texture.filter, texture.wrap, uv);
+}
+
+glm::dvec3 sample_texture(const scene::Texture& texture, const std::vector<scene::Image>& chain, glm::dvec2 uv,
+                          double lambda) {
+  if (texture.filter == scene::Filter::trilinear) return sample_trilinear(chain, texture.wrap, uv, lambda);
+  return sample(texture.image, texture.filter, texture.wrap, uv);
+}
+
+glm::dvec3 sample_falloff(const scene::Texture& texture, double depth) {
+  return sample(texture.image, texture.filter, scene::Wrap::clamp, {depth, 0.5});
 }
 
 glm::dvec3 sample_projector_image(const scene::Texture& texture, glm::dvec2 st) {

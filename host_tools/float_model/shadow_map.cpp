@@ -25,7 +25,7 @@ ShadowMap render_shadow_map(const scene::Scene& scene, const scene::Projector& p
     if (fragment.depth < stored) stored = fragment.depth;
   };
   for (const scene::Object& object : scene.objects) {
-    const ObjectTransform transform = projector_depth_transform(projector, object);
+    const ObjectTransform transform = projector_depth_transform(scene.camera, projector, object);
     for (std::size_t i = 0; i < object.mesh.triangles.size(); ++i) {
       draw_triangle(transform_triangle(transform, object.mesh, i), viewport, object.cull, keep_nearest);
     }

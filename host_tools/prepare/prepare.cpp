@@ -52,6 +52,26 @@ Bounds bounds_of(const std::vector<std::int32_t>& xyz) {
   return b;
 }
 
+// Scene-format-2 features the fixed-point pipeline does not draw yet: refused by name
+// ("FIELD: expected ..."; the CLI puts the scene file in front) rather than drawn wrong.
+// Texgen and camera-space projectors need no refusal: their uvs and matrices come from
+// the shared derivations (scene::vertex_uvs, scene::projector_texture_matrix).
+void reject_undrawn_v2_features(const scene::Scene& s) {
+  const std::string not_yet = " (the fixed-point backend does not draw it yet; --backend float does)";
+  for (const scene::Object& o : s.objects) {
+    if (o.texture < 0) continue;
+    const scene::Texture& t = s.textures[static_cast<std::size_t>(o.texture)];
+    if (t.filter == scene::Filter::trilinear) {
+      throw PrepareError("textures." + t.name + ".filter: expected nearest or bilinear for a texture on an object, got trilinear" + not_yet);
+    }
+  }
+  for (std::size_t j = 0; j < s.projectors.size(); ++j) {
+    const std::string field = "projectors[" + std::to_string(j) + "].";
+    if (s.projectors[j].falloff >= 0) throw PrepareError(field + "falloff: expected no falloff, got one" + not_yet);
+    if (s.projectors[j].facing_only) throw PrepareError(field + "facing_only: expected false, got true" + not_yet);
+  }
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> framed_texels(const scene::Image& image, Wrap wrap) {
@@ -85,6 +105,7 @@ int uv_frac_bits_for(double largest_texel_coordinate) {
 }
 
 std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
+  reject_undrawn_v2_features(s);
   auto out = std::make_unique<PreparedStorage>();
   const std::size_t projector_count = s.projectors.size();
 
@@ -156,13 +177,14 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
     int frac = 8;
     if (o.texture >= 0) {
       const scene::Image& img = s.textures[static_cast<std::size_t>(o.texture)].image;
+      const std::vector<glm::dvec2> uvs = scene::vertex_uvs(s.camera, o);  // given, or from texgen
       double largest = 0.0;
-      for (const glm::dvec2& uv : o.mesh.uvs)
+      for (const glm::dvec2& uv : uvs)
         largest = std::max({largest, std::fabs(uv.x * img.width), std::fabs(uv.y * img.height)});
       if (!(largest < texel_coordinate_limit))
         throw PrepareError(where + ".uvs: texel coordinate " + std::to_string(largest) + " is beyond the supported 2^21");
       frac = uv_frac_bits_for(largest);
-      for (const glm::dvec2& uv : o.mesh.uvs) {
+      for (const glm::dvec2& uv : uvs) {
         out->uvs[i].push_back(static_cast<std::int32_t>(std::llround(std::ldexp(uv.x * img.width, frac))));
         out->uvs[i].push_back(static_cast<std::int32_t>(std::llround(std::ldexp(uv.y * img.height, frac))));
       }
@@ -174,8 +196,8 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
 
     out->clip_from_object.push_back(to_mat4_block(view_projection * o.model));
     for (const scene::Projector& p : s.projectors) {
-      out->projector_from_object.push_back(to_mat4_block(scene::projector_texture_matrix(p) * o.model));
-      out->light_clip_from_object.push_back(to_mat4_block(scene::projector_view_projection(p) * o.model));
+      out->projector_from_object.push_back(to_mat4_block(scene::projector_texture_matrix(s.camera, p) * o.model));
+      out->light_clip_from_object.push_back(to_mat4_block(scene::projector_view_projection(s.camera, p) * o.model));
     }
 
     ObjectData d{};

@@ -119,6 +119,16 @@ glm::dvec2 JsonField::vec2(const NumberRange& range) const {
   return {uv[0].number(range), uv[1].number(range)};
 }
 
+glm::dvec4 JsonField::vec4(const NumberRange& range) const {
+  const auto abcd = elements(4, "4 numbers");
+  return {abcd[0].number(range), abcd[1].number(range), abcd[2].number(range), abcd[3].number(range)};
+}
+
+bool JsonField::boolean() const {
+  if (!value_->is_boolean()) fail("expected true or false");
+  return value_->get<bool>();
+}
+
 std::string JsonField::choice_description(const std::vector<std::string_view>& names) {
   return "expected one of " + join(names, ", ");
 }

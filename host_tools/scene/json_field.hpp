@@ -15,6 +15,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "field_path.hpp"
 #include "json_document.hpp"
@@ -56,6 +57,8 @@ class JsonField {
   std::string string() const;
   glm::dvec3 vec3(const NumberRange& range = any_number()) const;
   glm::dvec2 vec2(const NumberRange& range = any_number()) const;
+  glm::dvec4 vec4(const NumberRange& range = any_number()) const;
+  bool boolean() const;
 
   // One of a fixed set of names, e.g. {{"nearest", Filter::nearest}, ...}.
   template <typename Enum>

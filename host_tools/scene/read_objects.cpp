@@ -1,5 +1,6 @@
 // objects[]: geometry (an OBJ file or inline arrays), surface and transform.
 #include <array>
+#include <optional>
 
 #include "file_checks.hpp"
 #include "obj_mesh.hpp"
@@ -26,9 +27,20 @@ Mesh read_geometry(const JsonField& object) {
   return read_inline_mesh(object);
 }
 
-Object read_object(const JsonField& object, std::size_t index, const std::vector<Texture>& textures) {
+// Spec: texgen replaces given uvs, so it is an error beside inline uvs (it overrides an OBJ's vt).
+std::optional<Texgen> read_texgen_of(const JsonField& object) {
+  const auto texgen = object.optional("texgen");
+  if (!texgen) return std::nullopt;
+  if (object.has("uvs")) {
+    texgen->fail_with("expected either texgen or inline uvs, got both: texgen generates the uvs");
+  }
+  return read_texgen(*texgen);
+}
+
+Object read_object(const JsonField& object, std::size_t index, const std::vector<Texture>& textures, int version) {
   object.expect_object_with_fields(
-      {"name", "mesh", "positions", "uvs", "triangles", "color", "texture", "cull", "transform"});
+      {"name", "mesh", "positions", "uvs", "triangles", "color", "texture", "cull", "transform", "texgen"});
+  refuse_version_2_fields(object, version, {"texgen"});
   Object loaded;
   // The spec gives objects no default name; the field path is unique and findable.
   loaded.name = object.has("name") ? object.required("name").string() : "objects[" + std::to_string(index) + "]";
@@ -37,15 +49,16 @@ Object read_object(const JsonField& object, std::size_t index, const std::vector
   if (const auto texture = object.optional("texture")) loaded.texture = find_texture(*texture, textures);
   if (const auto cull = object.optional("cull")) loaded.cull = cull->choice<Cull>({{"none", Cull::none}, {"back", Cull::back}});
   if (const auto transform = object.optional("transform")) loaded.model = read_transform(*transform);
+  loaded.texgen = read_texgen_of(object);
   return loaded;
 }
 
 }  // namespace
 
-std::vector<Object> read_objects(const JsonField& objects, const std::vector<Texture>& textures) {
+std::vector<Object> read_objects(const JsonField& objects, const std::vector<Texture>& textures, int version) {
   std::vector<Object> loaded;
   const auto elements = objects.elements();
-  for (std::size_t i = 0; i < elements.size(); ++i) loaded.push_back(read_object(elements[i], i, textures));
+  for (std::size_t i = 0; i < elements.size(); ++i) loaded.push_back(read_object(elements[i], i, textures, version));
   return loaded;
 }
 

@@ -1,4 +1,4 @@
-// The scene's fixed parts: format version, framebuffer size, camera.
+// The scene's fixed parts: framebuffer size, camera.
 #include "scene_readers.hpp"
 
 namespace spanlight::scene::detail {
@@ -7,16 +7,6 @@ namespace {
 constexpr int max_output_side = 4096;
 
 }  // namespace
-
-void read_version(const JsonField& root) {
-  if (!root.has("spanlight_scene")) {
-    root.fail_member("spanlight_scene", "expected the format version 1, got nothing: the field is missing");
-  }
-  const JsonField version = root.required("spanlight_scene");
-  if (!version.json().is_number() || version.json().get<double>() != 1.0) {
-    version.fail("expected the format version 1");
-  }
-}
 
 void read_output(const JsonField& output, Scene& scene) {
   output.expect_object_with_fields({"width", "height"});

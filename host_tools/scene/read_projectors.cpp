@@ -1,4 +1,5 @@
-// projectors[]: view volume, projected image and colour, optional shadows.
+// projectors[]: view volume, projected image and colour, optional shadows; v2: falloff,
+// facing_only and space.
 #include "scene_readers.hpp"
 
 namespace spanlight::scene::detail {
@@ -18,9 +19,11 @@ Shadows read_shadows(const JsonField& shadows) {
   return loaded;
 }
 
-Projector read_projector(const JsonField& projector, std::size_t index, const std::vector<Texture>& textures) {
-  projector.expect_object_with_fields(
-      {"name", "eye", "target", "up", "fovy_deg", "aspect", "near", "far", "image", "color", "shadows"});
+Projector read_projector(const JsonField& projector, std::size_t index, const std::vector<Texture>& textures,
+                         int version) {
+  projector.expect_object_with_fields({"name", "eye", "target", "up", "fovy_deg", "aspect", "near", "far", "image",
+                                       "color", "shadows", "falloff", "facing_only", "space"});
+  refuse_version_2_fields(projector, version, {"falloff", "facing_only", "space"});
   Projector loaded;
   loaded.name = projector.has("name") ? projector.required("name").string()
                                       : "projectors[" + std::to_string(index) + "]";
@@ -35,15 +38,21 @@ Projector read_projector(const JsonField& projector, std::size_t index, const st
   loaded.image = find_texture(projector.required("image"), textures);
   if (const auto color = projector.optional("color")) loaded.color = color->vec3(at_least(0.0));
   if (const auto shadows = projector.optional("shadows")) loaded.shadows = read_shadows(*shadows);
+  if (const auto falloff = projector.optional("falloff")) loaded.falloff = find_texture(*falloff, textures);
+  if (const auto facing_only = projector.optional("facing_only")) loaded.facing_only = facing_only->boolean();
+  if (const auto space = projector.optional("space")) {
+    loaded.space = space->choice<ProjectorSpace>({{"world", ProjectorSpace::world}, {"camera", ProjectorSpace::camera}});
+  }
   return loaded;
 }
 
 }  // namespace
 
-std::vector<Projector> read_projectors(const JsonField& projectors, const std::vector<Texture>& textures) {
+std::vector<Projector> read_projectors(const JsonField& projectors, const std::vector<Texture>& textures,
+                                       int version) {
   std::vector<Projector> loaded;
   const auto elements = projectors.elements();
-  for (std::size_t i = 0; i < elements.size(); ++i) loaded.push_back(read_projector(elements[i], i, textures));
+  for (std::size_t i = 0; i < elements.size(); ++i) loaded.push_back(read_projector(elements[i], i, textures, version));
   return loaded;
 }
 

@@ -22,20 +22,38 @@ void check_repeat_sizes(const JsonField& texture, const Texture& loaded) {
                                   (texture.has("wrap") ? "repeat" : "repeat (the default)"));
 }
 
-Texture read_texture(const std::string& name, const JsonField& texture) {
+// Spec: trilinear (v2) only for power-of-two sizes (every level halves each side exactly).
+void check_trilinear_sizes(const JsonField& texture, const Texture& loaded) {
+  if (loaded.filter != Filter::trilinear || (is_power_of_two(loaded.image.width) && is_power_of_two(loaded.image.height))) {
+    return;
+  }
+  const std::string size = std::to_string(loaded.image.width) + "x" + std::to_string(loaded.image.height);
+  texture.fail_member("filter", "expected nearest or bilinear for the " + size + " image " + loaded.path.string() +
+                                    " (trilinear needs power-of-two sizes), got trilinear");
+}
+
+Filter read_filter(const JsonField& filter, int version) {
+  if (version < 2 && filter.json() == "trilinear") {
+    filter.fail_with("expected nearest or bilinear in a version-1 file, got trilinear, which is new in version 2 "
+                     "(set \"spanlight_scene\": 2)");
+  }
+  return filter.choice<Filter>(
+      {{"nearest", Filter::nearest}, {"bilinear", Filter::bilinear}, {"trilinear", Filter::trilinear}});
+}
+
+Texture read_texture(const std::string& name, const JsonField& texture, int version) {
   texture.expect_object_with_fields({"image", "filter", "wrap"});
   Texture loaded;
   loaded.name = name;
   const JsonField image = texture.required("image");
   loaded.path = resolve_against_scene(texture.file(), image.string());
-  if (const auto filter = texture.optional("filter")) {
-    loaded.filter = filter->choice<Filter>({{"nearest", Filter::nearest}, {"bilinear", Filter::bilinear}});
-  }
+  if (const auto filter = texture.optional("filter")) loaded.filter = read_filter(*filter, version);
   if (const auto wrap = texture.optional("wrap")) {
     loaded.wrap = wrap->choice<Wrap>({{"repeat", Wrap::repeat}, {"clamp", Wrap::clamp}, {"border", Wrap::border}});
   }
   loaded.image = load_asset(texture.file(), [&] { return load_image(loaded.path, image.path()); });
   check_repeat_sizes(texture, loaded);
+  check_trilinear_sizes(texture, loaded);
   return loaded;
 }
 
@@ -47,9 +65,9 @@ std::string texture_names(const std::vector<Texture>& textures) {
 
 }  // namespace
 
-std::vector<Texture> read_textures(const JsonField& textures) {
+std::vector<Texture> read_textures(const JsonField& textures, int version) {
   std::vector<Texture> loaded;
-  for (const auto& [name, texture] : textures.members()) loaded.push_back(read_texture(name, texture));
+  for (const auto& [name, texture] : textures.members()) loaded.push_back(read_texture(name, texture, version));
   return loaded;
 }
 

@@ -1,4 +1,4 @@
-// The parsed, validated scene file (spec: shared/spec/scene-format.md, version 1).
+// The parsed, validated scene file (spec: docs/scene-format.md, versions 1 and 2).
 // Host only: doubles and std::vector are fine here. Every error with file and
 // field path comes from load_scene(), before anything is rendered.
 #pragma once
@@ -15,10 +15,12 @@
 
 namespace spanlight::scene {
 
-enum class Filter { nearest, bilinear };
+enum class Filter { nearest, bilinear, trilinear };  // trilinear: v2, mipmapped (mip_chain.hpp)
 enum class Wrap { repeat, clamp, border };
 enum class Cull { none, back };
 enum class ShadowFilter { nearest, pcf2x2 };
+enum class TexgenSpace { object, eye };     // v2: planes applied to object or camera-eye coordinates
+enum class ProjectorSpace { world, camera };  // v2: camera: eye/target/up given in the camera's eye space
 
 // 8-bit RGB, top row first (as in the file). Grey is expanded, alpha dropped.
 struct Image {
@@ -53,13 +55,21 @@ struct Mesh {
   std::filesystem::path file;  // the OBJ file it was read from, resolved; empty for an inline mesh
 };
 
+// v2 objects[].texgen: u = s . (x, y, z, 1), v = t . (x, y, z, 1) of each vertex in object
+// coordinates or in the camera's eye coordinates V_cam * M * v (vertex_uvs computes them).
+struct Texgen {
+  glm::dvec4 s{0.0}, t{0.0};
+  TexgenSpace space = TexgenSpace::object;
+};
+
 struct Object {
   std::string name;
-  Mesh mesh;
+  Mesh mesh;  // with texgen, mesh.uvs are not used (an OBJ's vt is overridden; inline uvs are an error)
   glm::dvec3 color{1.0};
   int texture = -1;  // index into Scene::textures, -1: none
   Cull cull = Cull::none;
   glm::dmat4 model{1.0};  // M = T * Rz * Ry * Rx * S, or the given matrix
+  std::optional<Texgen> texgen;  // v2; none: the mesh's uvs
 };
 
 struct Shadows {
@@ -78,10 +88,14 @@ struct Projector {
   int image = -1;  // index into Scene::textures
   glm::dvec3 color{1.0};
   std::optional<Shadows> shadows;
+  int falloff = -1;           // v2: index into Scene::textures sampled at (r/q, 0.5), clamped; -1: none
+  bool facing_only = false;   // v2: lights a triangle only when it faces the projector and the camera alike
+  ProjectorSpace space = ProjectorSpace::world;  // v2: camera: eye, target, up in the camera's eye space
 };
 
 struct Scene {
   std::filesystem::path file;
+  int version = 1;  // spanlight_scene: 1 or 2
   std::string name;
   int width = 0;
   int height = 0;
@@ -112,9 +126,20 @@ class SceneError : public std::runtime_error {
 // Parses and validates a scene file; loads its meshes and images. Throws SceneError.
 Scene load_scene(const std::filesystem::path& file);
 
-// The matrices the spec defines, in double (GLM conventions, column-major).
-glm::dmat4 camera_view_projection(const Scene& scene);            // perspective(fovy, w/h, n, f) * lookAt
-glm::dmat4 projector_view_projection(const Projector& projector);  // P_j * V_j
-glm::dmat4 projector_texture_matrix(const Projector& projector);   // B * P_j * V_j, B maps [-1,1] to [0,1]
+// The matrices the spec defines, in double (GLM conventions, column-major); both backends
+// take them from here. A projector's V_j is world-to-projector: for `space: camera` it is
+// lookAt(eye_j, target_j, up_j) * V_cam, so these take the camera. Shadow maps are rendered
+// with projector_view_projection, the same world-to-projector view.
+glm::dmat4 camera_view(const Camera& camera);                    // V_cam = lookAt(eye, target, up)
+glm::dmat4 camera_view_projection(const Scene& scene);           // perspective(fovy, w/h, n, f) * V_cam
+glm::dmat4 projector_view(const Camera& camera, const Projector& projector);             // V_j
+glm::dmat4 projector_view_projection(const Camera& camera, const Projector& projector);  // P_j * V_j
+glm::dmat4 projector_texture_matrix(const Camera& camera, const Projector& projector);   // B * P_j * V_j, B: [-1,1] -> [0,1]
+// The projector's eye in world coordinates: eye_j, or V_cam^-1 * eye_j for `space: camera`.
+glm::dvec3 projector_eye_in_world(const Camera& camera, const Projector& projector);
+
+// An object's uv per vertex: the mesh's, or with texgen u = s . p, v = t . p where p is the
+// vertex (x, y, z, 1) in object coordinates or in eye coordinates V_cam * M * v.
+std::vector<glm::dvec2> vertex_uvs(const Camera& camera, const Object& object);
 
 }  // namespace spanlight::scene

@@ -2,6 +2,8 @@
 // Each takes the part's JsonField and throws SceneError on any bad input.
 #pragma once
 
+#include <initializer_list>
+#include <string_view>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -19,15 +21,19 @@ struct ViewVolume {
   double far = 0.0;
 };
 
-void read_version(const JsonField& root);
+// The format version, 1 or 2 (format_version.cpp).
+int read_version(const JsonField& root);
+// In a version-1 file, refuses each of `fields` that `owner` holds: they are new in version 2.
+void refuse_version_2_fields(const JsonField& owner, int version, std::initializer_list<std::string_view> fields);
 void read_output(const JsonField& output, Scene& scene);
 Camera read_camera(const JsonField& camera);
 ViewVolume read_view_volume(const JsonField& owner);  // reads owner.eye ... owner.far
-std::vector<Texture> read_textures(const JsonField& textures);
+std::vector<Texture> read_textures(const JsonField& textures, int version);
 int find_texture(const JsonField& name, const std::vector<Texture>& textures);
-std::vector<Object> read_objects(const JsonField& objects, const std::vector<Texture>& textures);
+std::vector<Object> read_objects(const JsonField& objects, const std::vector<Texture>& textures, int version);
+Texgen read_texgen(const JsonField& texgen);
 Mesh read_inline_mesh(const JsonField& object);
 glm::dmat4 read_transform(const JsonField& transform);
-std::vector<Projector> read_projectors(const JsonField& projectors, const std::vector<Texture>& textures);
+std::vector<Projector> read_projectors(const JsonField& projectors, const std::vector<Texture>& textures, int version);
 
 }  // namespace spanlight::scene::detail

@@ -90,7 +90,7 @@ TEST_CASE("uv, depth and projector coordinates are perspective-correct on a rece
   s.objects.push_back(floor_quad(-1.0, -4.0, 1.0));
   s.projectors.push_back(side_projector());
   const glm::dmat4 view_projection = scene::camera_view_projection(s);
-  const glm::dmat4 projector_matrix = scene::projector_texture_matrix(s.projectors[0]);
+  const glm::dmat4 projector_matrix = scene::projector_texture_matrix(s.camera, s.projectors[0]);
 
   const auto samples = rasterize_all(s);
   REQUIRE(samples.size() == 64 * 24);  // rows 40..63, every column, the shared diagonal once

@@ -4,7 +4,7 @@
 // holds the example scenes' assets (scenes/assets, scenes/extremes/assets, and
 // tests/scene/bad/assets for the malformed ones), so fuzzed scenes can name
 // real meshes and images.
-// Contract under test (spec: shared/spec/scene-format.md; scene.hpp):
+// Contract under test (spec: docs/scene-format.md; scene.hpp):
 //   load_scene returns a Scene or throws SceneError; nothing else, no crash,
 //   no sanitizer report.
 // A scene that loads is then prepared (PrepareError is the documented refusal

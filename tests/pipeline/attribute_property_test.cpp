@@ -93,6 +93,7 @@ Reference reference_of(const spanlight::PreparedScene& scene) {
     mesh.uvs.emplace_back(o.uvs[2 * k] * uv_unit, o.uvs[2 * k + 1] * uv_unit);  // texels
   }
   mesh.triangles = {{0, 1, 2}};
+  transform.uvs = mesh.uvs;
   fm::ClipTriangle tri = fm::transform_triangle(transform, mesh, 0);
 
   Reference ref;

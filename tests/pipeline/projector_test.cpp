@@ -28,7 +28,7 @@ TEST_CASE("geometry wholly behind the projector gets ambient light only, exactly
                                glm::dvec3(0.6)));
   s.projectors.push_back(pt::projector({0, 0, -3}, {0, 0, -10}, {0, 1, 0}, 60.0, 0.5, 20.0, 0, glm::dvec3(1.0)));
 
-  const glm::dmat4 texture_matrix = sc::projector_texture_matrix(s.projectors[0]);
+  const glm::dmat4 texture_matrix = sc::projector_texture_matrix(s.camera, s.projectors[0]);
   for (const glm::dvec3& corner : s.objects[0].mesh.positions) {
     const glm::dvec4 strq = texture_matrix * glm::dvec4(corner, 1.0);
     REQUIRE(strq.w < 0.0);
@@ -111,7 +111,7 @@ TEST_CASE("a floor that q = 0 cuts through is lit only where q > 0 and inside th
   for (const bool shadows : {false, true}) {
     if (shadows) s.projectors[0].shadows = sc::Shadows{64, 0.005, sc::ShadowFilter::pcf2x2};
     INFO((shadows ? "with" : "without") << " a shadow map");
-    const glm::dmat4 texture_matrix = sc::projector_texture_matrix(s.projectors[0]);
+    const glm::dmat4 texture_matrix = sc::projector_texture_matrix(s.camera, s.projectors[0]);
 
     // The exact picture at every pixel centre.
     std::vector<FloorPoint> exact(static_cast<std::size_t>(s.width * s.height));

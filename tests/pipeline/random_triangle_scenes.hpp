@@ -118,7 +118,7 @@ struct RandomTriangles {
       scene::Projector p = projector(eye, target, up, uniform(20.0, 170.0), distance * 1e-3, distance * 1e3, image,
                                      glm::dvec3(1.0));
       p.aspect = log_uniform(0.5, 2.0);
-      const glm::dmat4 m = scene::projector_texture_matrix(p);
+      const glm::dmat4 m = scene::projector_texture_matrix(scene::Camera{}, p);  // a world-space projector: no camera
       if (std::all_of(v.begin(), v.end(), [&](const glm::dvec3& x) { return (m * glm::dvec4(x, 1.0)).w > 0.0; }))
         return p;
     }

@@ -32,7 +32,7 @@ const std::vector<BadScene> bad_scenes = {
   {"number_overflow_in_array.json",        "camera.eye[1]",                   itself},
   {"duplicate_key.json",                   "camera.near",                     itself},
   // version
-  {"version_2.json",                       "spanlight_scene",                 itself},
+  {"version_3.json",                       "spanlight_scene",                 itself},
   {"version_missing.json",                 "spanlight_scene",                 itself},
   {"version_string.json",                  "spanlight_scene",                 itself},
   // unknown fields
@@ -120,6 +120,25 @@ const std::vector<BadScene> bad_scenes = {
   {"camera_up_zero.json",                  "camera.up",                       itself},
   {"projector_eye_equals_target.json",     "projectors[0].target",            itself},
   {"projector_up_parallel.json",           "projectors[0].up",                itself},
+  // version-2 fields in a version-1 file
+  {"v1_texgen.json",                      "objects[0].texgen",                itself},
+  {"v1_trilinear.json",                   "textures.checker.filter",          itself},
+  {"v1_falloff.json",                     "projectors[0].falloff",            itself},
+  {"v1_facing_only.json",                 "projectors[0].facing_only",        itself},
+  {"v1_projector_space.json",             "projectors[0].space",              itself},
+  // version-2 values
+  {"trilinear_npot.json",                 "textures.checker.filter",          itself},
+  {"texgen_and_uvs.json",                 "objects[0].texgen",                itself},
+  {"texgen_not_object.json",              "objects[0].texgen",                itself},
+  {"texgen_s_missing.json",               "objects[0].texgen.s",              itself},
+  {"texgen_s_three_numbers.json",         "objects[0].texgen.s",              itself},
+  {"texgen_t_string.json",                "objects[0].texgen.t[1]",           itself},
+  {"texgen_space_unknown.json",           "objects[0].texgen.space",          itself},
+  {"texgen_unknown_field.json",           "objects[0].texgen.r",              itself},
+  {"falloff_unknown.json",                "projectors[0].falloff",            itself},
+  {"falloff_not_string.json",             "projectors[0].falloff",            itself},
+  {"facing_only_string.json",             "projectors[0].facing_only",        itself},
+  {"projector_space_unknown.json",        "projectors[0].space",              itself},
 };
 // clang-format on
 

@@ -114,7 +114,7 @@ TEST_CASE("the camera projects its target to the centre, near to depth -1, far t
 TEST_CASE("a projector's texture matrix maps its frustum to [0, 1]", "[scene][matrix]") {
   const Scene scene = load_scene(example_scene("horizon.json"));
   const Projector& projector = scene.projectors[0];  // aspect 2
-  const glm::dmat4 texture_matrix = projector_texture_matrix(projector);
+  const glm::dmat4 texture_matrix = projector_texture_matrix(scene.camera, projector);
   const glm::dvec3 forward = glm::normalize(projector.target - projector.eye);
 
   const glm::dvec3 centre = project(texture_matrix, projector.target);
@@ -129,5 +129,5 @@ TEST_CASE("a projector's texture matrix maps its frustum to [0, 1]", "[scene][ma
 
   // B itself: [-1, 1] to [0, 1] on x, y and z, w kept.
   const glm::dmat4 bias = from_rows({{{0.5, 0, 0, 0.5}, {0, 0.5, 0, 0.5}, {0, 0, 0.5, 0.5}, {0, 0, 0, 1}}});
-  check_close(texture_matrix, bias * projector_view_projection(projector));
+  check_close(texture_matrix, bias * projector_view_projection(scene.camera, projector));
 }

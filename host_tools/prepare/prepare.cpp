@@ -1,5 +1,7 @@
 #include "prepare/prepare.hpp"
 
+#include "scene/mip_chain.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -52,26 +54,6 @@ Bounds bounds_of(const std::vector<std::int32_t>& xyz) {
   return b;
 }
 
-// Scene-format-2 features the fixed-point pipeline does not draw yet: refused by name
-// ("FIELD: expected ..."; the CLI puts the scene file in front) rather than drawn wrong.
-// Texgen and camera-space projectors need no refusal: their uvs and matrices come from
-// the shared derivations (scene::vertex_uvs, scene::projector_texture_matrix).
-void reject_undrawn_v2_features(const scene::Scene& s) {
-  const std::string not_yet = " (the fixed-point backend does not draw it yet; --backend float does)";
-  for (const scene::Object& o : s.objects) {
-    if (o.texture < 0) continue;
-    const scene::Texture& t = s.textures[static_cast<std::size_t>(o.texture)];
-    if (t.filter == scene::Filter::trilinear) {
-      throw PrepareError("textures." + t.name + ".filter: expected nearest or bilinear for a texture on an object, got trilinear" + not_yet);
-    }
-  }
-  for (std::size_t j = 0; j < s.projectors.size(); ++j) {
-    const std::string field = "projectors[" + std::to_string(j) + "].";
-    if (s.projectors[j].falloff >= 0) throw PrepareError(field + "falloff: expected no falloff, got one" + not_yet);
-    if (s.projectors[j].facing_only) throw PrepareError(field + "facing_only: expected false, got true" + not_yet);
-  }
-}
-
 }  // namespace
 
 std::vector<std::uint32_t> framed_texels(const scene::Image& image, Wrap wrap) {
@@ -105,50 +87,70 @@ int uv_frac_bits_for(double largest_texel_coordinate) {
 }
 
 std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
-  reject_undrawn_v2_features(s);
   auto out = std::make_unique<PreparedStorage>();
   const std::size_t projector_count = s.projectors.size();
 
-  // Each (image, wrap) a pass reads gets its own TextureData: objects read a texture
-  // with its wrap, projectors with a black frame (border).
-  std::map<std::pair<int, Wrap>, std::int16_t> baked;
-  auto texture_for = [&](int index, Wrap wrap) -> std::int16_t {
-    const auto key = std::make_pair(index, wrap);
-    if (const auto found = baked.find(key); found != baked.end()) return found->second;
+  // Each (image, wrap, use) a pass reads gets its own TextureData: objects read a
+  // texture with its wrap (a trilinear one with its whole mip chain), projectors
+  // with a black frame (border) and falloff clamped to the edge, both at level 0
+  // and never mipmapped (a trilinear image is sampled bilinearly there).
+  struct Use {
+    int index;
+    Wrap wrap;
+    bool mipmapped;
+    auto operator<=>(const Use&) const = default;
+  };
+  std::map<Use, std::int16_t> baked;
+  std::vector<Use> order;  // by id
+  auto texture_for = [&](int index, Wrap wrap, bool object) -> std::int16_t {
     const scene::Texture& t = s.textures[static_cast<std::size_t>(index)];
+    const Use use{index, wrap, object && t.filter == scene::Filter::trilinear};
+    if (const auto found = baked.find(use); found != baked.end()) return found->second;
     PreparedTexture& storage = out->texture_storage.emplace_back();
-    storage.framed.push_back(framed_texels(t.image, wrap));
+    if (use.mipmapped) {
+      for (const scene::Image& level : scene::mip_chain(t.image)) storage.framed.push_back(framed_texels(level, wrap));
+    } else {
+      storage.framed.push_back(framed_texels(t.image, wrap));
+    }
     const auto id = static_cast<std::int16_t>(out->texture_storage.size() - 1);
-    baked.emplace(key, id);
-    out->texture_names.push_back(t.name + (wrap == to_wrap(t.wrap) ? "" : "_border"));
+    baked.emplace(use, id);
+    order.push_back(use);
+    const char* suffix = wrap == to_wrap(t.wrap) ? "" : (wrap == Wrap::border ? "_border" : "_clamp");
+    out->texture_names.push_back(t.name + suffix + (object || t.filter != scene::Filter::trilinear ? "" : "_level0"));
     return id;
   };
-  std::vector<std::pair<int, Wrap>> uses;  // in order of first use, so indices are stable
-  std::vector<std::int16_t> object_texture(s.objects.size(), -1), projector_texture(projector_count, -1);
+  std::vector<std::int16_t> object_texture(s.objects.size(), -1), projector_texture(projector_count, -1),
+      falloff_texture(projector_count, -1);
   for (std::size_t i = 0; i < s.objects.size(); ++i)
-    if (const int t = s.objects[i].texture; t >= 0) object_texture[i] = texture_for(t, to_wrap(s.textures[static_cast<std::size_t>(t)].wrap));
-  for (std::size_t j = 0; j < projector_count; ++j) projector_texture[j] = texture_for(s.projectors[j].image, Wrap::border);
+    if (const int t = s.objects[i].texture; t >= 0)
+      object_texture[i] = texture_for(t, to_wrap(s.textures[static_cast<std::size_t>(t)].wrap), true);
+  for (std::size_t j = 0; j < projector_count; ++j) {
+    projector_texture[j] = texture_for(s.projectors[j].image, Wrap::border, false);
+    if (s.projectors[j].falloff >= 0) falloff_texture[j] = texture_for(s.projectors[j].falloff, Wrap::clamp, false);
+  }
 
   // Level tables after all storage exists (their pointers must not move).
   for (std::size_t i = 0; i < out->texture_storage.size(); ++i) {
     PreparedTexture& storage = out->texture_storage[i];
-    int index = -1;
-    Wrap wrap = Wrap::repeat;
-    for (const auto& [key, id] : baked)
-      if (static_cast<std::size_t>(id) == i) std::tie(index, wrap) = key;
-    const scene::Texture& t = s.textures[static_cast<std::size_t>(index)];
-    const auto w = static_cast<std::uint16_t>(t.image.width), h = static_cast<std::uint16_t>(t.image.height);
-    const std::uint32_t stride = w + 2u * texture_frame;
-    storage.levels.push_back(TextureLevel{storage.framed[0].data() + stride * texture_frame + texture_frame, w, h,
-                                          static_cast<std::uint16_t>(stride)});
-    out->textures.push_back(TextureData{storage.levels.data(), 1, to_filter(t.filter), wrap});
+    const Use& use = order[i];
+    const scene::Texture& t = s.textures[static_cast<std::size_t>(use.index)];
+    for (std::size_t k = 0; k < storage.framed.size(); ++k) {
+      const auto w = static_cast<std::uint16_t>(std::max(1, t.image.width >> k));
+      const auto h = static_cast<std::uint16_t>(std::max(1, t.image.height >> k));
+      const std::uint32_t stride = w + 2u * texture_frame;
+      storage.levels.push_back(TextureLevel{storage.framed[k].data() + stride * texture_frame + texture_frame, w, h,
+                                            static_cast<std::uint16_t>(stride)});
+    }
+    const Filter filter = use.mipmapped ? Filter::trilinear : to_filter(t.filter);
+    out->textures.push_back(TextureData{storage.levels.data(), static_cast<std::uint8_t>(storage.levels.size()), filter, use.wrap});
   }
 
   for (std::size_t j = 0; j < projector_count; ++j) {
     const scene::Projector& p = s.projectors[j];
     ProjectorData d{};
     d.texture = projector_texture[j];
-    d.falloff = -1;
+    d.falloff = falloff_texture[j];
+    d.facing_only = p.facing_only;
     for (int c = 0; c < 3; ++c) d.color[c] = to_q8_8(p.color[c]);
     d.shadows = p.shadows.has_value();
     if (p.shadows) {

@@ -7,7 +7,11 @@ set(SPANLIGHT_BAKED_SCENES
   "three_projectors|scenes/three_projectors.json|"
   "horizon|scenes/horizon.json|"
   "textured_room|scenes/textured_room.json|--format rgb565 --depth-bits 16"
-  "textured_room_nearest|scenes/textured_room_nearest.json|--format rgb565 --depth-bits 16")
+  "textured_room_nearest|scenes/textured_room_nearest.json|--format rgb565 --depth-bits 16"
+  "mesh_bear|scenes/mesh_bear.json|--format rgb565 --depth-bits 16"
+  "v2_mip_floor|scenes/v2_mip_floor.json|"
+  "v2_falloff_corridor|scenes/v2_falloff_corridor.json|"
+  "v2_facing_wall|scenes/v2_facing_wall.json|")
 
 # spanlight_baked_scene_fields(<entry> <name_var> <file_var> <options_var>)
 function(spanlight_baked_scene_fields entry name_var file_var options_var)

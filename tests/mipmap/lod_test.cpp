@@ -14,7 +14,9 @@
 #include <random>
 
 #include "spanlight/2_triangle/setup.hpp"
+#include "spanlight/3_span/divide.hpp"
 #include "spanlight/3_span/lod.hpp"
+#include "spanlight/3_span/walk.hpp"
 
 using namespace spanlight;
 
@@ -119,4 +121,62 @@ TEST_CASE("lod_at is lambda of the perspective mapping within 2^-8.5", "[mipmap]
   INFO("pixels " << pixels << ", worst " << worst);
   CHECK(pixels > 20000);
   CHECK(worst <= std::exp2(-8.5));
+}
+
+// The walk holds one lambda per run (hold_lod): the mean of its ends', runs cut
+// until the ends differ by at most 1/16. Along a run lambda is monotonic here,
+// so every pixel's own lambda is within 1/32 + 2^-8.5 of the held one.
+TEST_CASE("a run's held lambda is within 1/32 + 2^-8.5 of each of its pixels'", "[mipmap]") {
+  std::mt19937 rng(0x5eed16);
+  std::uniform_int_distribution<int> coordinate(0, 320 * 256), exponent(0, 6), mantissa(1 << 30, (1u << 31) - 1);
+  std::uniform_int_distribution<int> texel(-2048 * 256, 2048 * 256);
+  const double bound = 1.0 / 32 + std::exp2(-8.5);
+  int pixels = 0, runs = 0;
+  double worst = 0;
+  for (int n = 0; n < 300; ++n) {
+    Case c{};
+    c.frac = 8;
+    for (int i = 0; i < 3; ++i) {
+      c.v[i] = {coordinate(rng), coordinate(rng) * 3 / 4, 1 << 29, static_cast<std::uint32_t>(mantissa(rng)), 40 + exponent(rng)};
+      c.u[i] = texel(rng);
+      c.w[i] = texel(rng);
+    }
+    TriangleSetup t{};
+    if (!setup_triangle(c.v, Cull::none, 240, t)) continue;
+    const ScreenVertex* at[3] = {&c.v[t.order[0]], &c.v[t.order[1]], &c.v[t.order[2]]};
+    const std::int32_t u[3] = {c.u[t.order[0]], c.u[t.order[1]], c.u[t.order[2]]};
+    const std::int32_t v[3] = {c.w[t.order[0]], c.w[t.order[1]], c.w[t.order[2]]};
+    LodPlanes planes = lod_planes(t, at, u, v, c.frac);
+    TriangleAttributes<0> attrs{};
+    attrs.u0 = u[0];
+    attrs.du1 = u[1] - u[0];
+    attrs.du2 = u[2] - u[0];
+    attrs.v0 = v[0];
+    attrs.dv1 = v[1] - v[0];
+    attrs.dv2 = v[2] - v[0];
+    const StepScale scale{{0, 0, 0}, {0, 0, 0}, static_cast<std::uint8_t>(c.frac)};
+    const SpanNeeds needs{true, scale, 0, 0, true};
+    const std::uint16_t texels[1] = {1};
+    const std::uint8_t texel_bits[1] = {28};
+    SpanControl control{6, 5, &scale, c.frac, texels, texel_bits, 0xFFFFFFFFu, &planes};
+    const FixedDivide<8, 1> divide{};
+    TriangleSetup rows = t;
+    rasterize_rows(rows, 320, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
+      if (row % 5 != 0) return;
+      planes.row_y = row * 256 + 128;
+      walk_span<0, true, false, true>(rows, attrs, needs, control, divide, c0, c1,
+                                       [&](std::int32_t column, std::int32_t count, const PixelRun<0>& r) {
+        ++runs;
+        for (std::int32_t k = 0; k < count; ++k) {
+          const double exact = exact_lambda(t, c, column + k + 0.5, row + 0.5);
+          if (!std::isfinite(exact) || r.lod == lod_level_zero) continue;
+          worst = std::max(worst, std::abs(r.lod / 256.0 - exact));
+          ++pixels;
+        }
+      });
+    });
+  }
+  INFO("runs " << runs << ", pixels " << pixels << ", worst " << worst);
+  CHECK(pixels > 20000);
+  CHECK(worst <= bound);
 }

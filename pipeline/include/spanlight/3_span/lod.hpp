@@ -14,9 +14,10 @@
 // on x). So along a row the numerator of d/dx is constant and that of d/dy is
 // affine in the column: per run, a few products and three logarithms.
 //
-// A run holds one lambda, taken at its middle pixel: the error against a
-// pixel's own lambda is lambda's change along the run plus lod_at's 2^-8.5
-// (tests/mipmap checks both).
+// A run holds one lambda: the mean of its ends', the run cut in halves until
+// they differ by at most 1/16 (hold_lod). Where lambda is monotonic along the
+// run, a pixel's own is then within 1/32 + 2^-8.5 of the held one; tests/mipmap
+// checks that bound on random triangles.
 #pragma once
 
 #include <cstdint>
@@ -130,6 +131,22 @@ constexpr std::int32_t lod_at(const LodPlanes& p, const TriangleSetup& t, std::i
   const std::int32_t along_y = flat_y ? INT32_MIN : log2_length2_q16(yu, yv);
   const std::int32_t twice_q16 = (along_x > along_y ? along_x : along_y) + p.constant_q16 - 4 * log2_q16(h);
   return (twice_q16 + 256) >> 9;  // / 2, to Q.8, rounded
+}
+
+// The lambda a run [column, run_end) holds, and where the run must end for
+// its ends' lambdas to lie within lod_run_spread of each other.
+inline constexpr std::int32_t lod_run_spread = 1 << (lod_frac_bits - 4);  // 1/16
+struct RunLod {
+  std::int32_t lod, run_end;
+};
+constexpr RunLod hold_lod(const LodPlanes& p, const TriangleSetup& t, std::int32_t column, std::int32_t run_end) {
+  const std::int32_t first = lod_at(p, t, column);
+  std::int32_t last = run_end - 1 > column ? lod_at(p, t, run_end - 1) : first;
+  while (run_end - column > 1 && (last - first > lod_run_spread || first - last > lod_run_spread)) {
+    run_end = column + (run_end - column) / 2;
+    last = run_end - 1 > column ? lod_at(p, t, run_end - 1) : first;
+  }
+  return {static_cast<std::int32_t>((std::int64_t{first} + last) >> 1), run_end};
 }
 
 }  // namespace spanlight

@@ -299,9 +299,14 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
       const std::uint32_t z = depth_q32(t, s);
       run.z = z > control.z_limit ? control.z_limit : z;
     }
-    const std::int32_t count = run_end - column;
+    std::int32_t count = run_end - column;
     if constexpr (UV && Lod) {
-      if (control.lod != nullptr) run.lod = lod_at(*control.lod, t, column + count / 2);
+      if (control.lod != nullptr) {
+        const RunLod held = hold_lod(*control.lod, t, column, run_end);
+        run_end = held.run_end;
+        count = run_end - column;
+        run.lod = held.lod;
+      }
     }
     run_pixels(column, count, run);
     if (run_end > c1) return;

@@ -37,6 +37,7 @@ Filter read_filter(const JsonField& filter, int version) {
     filter.fail_with("expected nearest or bilinear in a version-1 file, got trilinear, which is new in version 2 "
                      "(set \"spanlight_scene\": 2)");
   }
+  if (version < 2) return filter.choice<Filter>({{"nearest", Filter::nearest}, {"bilinear", Filter::bilinear}});
   return filter.choice<Filter>(
       {{"nearest", Filter::nearest}, {"bilinear", Filter::bilinear}, {"trilinear", Filter::trilinear}});
 }

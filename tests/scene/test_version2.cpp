@@ -136,3 +136,18 @@ TEST_CASE("texgen overrides an OBJ's vt: the mesh loads with its vt and the plan
   CHECK(scene.objects[0].mesh.uvs.size() == scene.objects[0].mesh.positions.size());
   CHECK(scene.objects[0].texgen->s == glm::dvec4(1, 0, 0, 0));  // vertex_uvs uses these (test_matrices.cpp)
 }
+
+TEST_CASE("an unknown filter is told the choices of the file's version", "[scene][v2]") {
+  const ScratchFolder folder;
+  for (const int version : {1, 2}) {
+    const std::string mipmap = R"("checker": { "image": ")" + asset("textures/checker.png") + R"(", "filter": "mipmap" })";
+    try {
+      load_text(folder, scene_text(version, mipmap, triangle, projector));
+      FAIL("loaded");
+    } catch (const SceneError& error) {
+      CHECK(error.field() == "textures.checker.filter");
+      CHECK_THAT(error.expected(), Catch::StartsWith(version == 1 ? "expected one of nearest, bilinear, got"
+                                                                  : "expected one of nearest, bilinear, trilinear, got"));
+    }
+  }
+}

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "bake/bake.hpp"
+#include "bake/knob_text.hpp"
 #include "spanlight/scene_features.hpp"
 
 namespace spanlight::bake {
@@ -87,10 +88,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << ",\n    .table_bits = " << int(f.table_bits) << ", .newton = " << int(f.newton) << ", .depth_bits = " << int(f.depth_bits)
       << ",\n    .repeat_sizes = {" << int(f.repeat_sizes[0]) << ", " << int(f.repeat_sizes[1]) << ", " << int(f.repeat_sizes[2])
       << ", " << int(f.repeat_sizes[3]) << "}, .any_repeat_size = " << boolean(f.any_repeat_size) << "};\n"
-      << "// As `spanlight render` takes them: --span " << knob_value(knobs, "span") << " --tolerance "
-      << knob_value(knobs, "tolerance") << " --table-bits " << knob_value(knobs, "table-bits") << " --newton "
-      << knob_value(knobs, "newton") << " --depth-bits " << knob_value(knobs, "depth-bits") << " --format "
-      << knob_value(knobs, "format") << " --passes " << knob_value(knobs, "passes") << "\n"
+      << "// As `spanlight render` takes them: " << knob_command_line(knobs) << "\n"
       << "inline constexpr spanlight::Knobs knobs{" << int(knobs.span_log2) << ", " << int(knobs.tolerance_log2) << ", "
       << int(knobs.table_bits) << ", " << int(knobs.newton) << ", " << int(knobs.depth_bits) << ", features.format, spanlight::Passes::"
       << (knobs.passes == Passes::fused ? "fused" : "multipass") << "};\n"

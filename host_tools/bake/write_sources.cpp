@@ -97,6 +97,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << "inline constexpr std::uint16_t width = " << s.width << ";\n"
       << "inline constexpr std::uint16_t height = " << s.height << ";\n"
       << "inline constexpr int projector_count = " << int(s.projector_count) << ";\n"
+      << "inline constexpr int texture_count = " << int(s.texture_count) << ";  // TextureData entries of the scene\n"
       << "inline constexpr std::uint16_t max_vertex_count = " << s.max_vertex_count << ";  // the vertex buffer a frame needs\n"
       << "inline constexpr std::uint32_t shadow_map_texels = " << shadow_texels << ";  // all maps together\n"
       << "// map_size of each projector, 0 where it casts no shadow.\n"

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
       {"bake", spanlight::cli::add_bake_command(app)},
       {"sweep", spanlight::cli::add_sweep_command(app)},
       {"analyze", spanlight::cli::add_analyze_command(app)},
+      {"cost", spanlight::cli::add_cost_command(app)},
   };
   try {
     app.parse(argc, argv);

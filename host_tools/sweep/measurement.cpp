@@ -62,7 +62,9 @@ fs::path default_build_dir() {
   return ec ? fs::current_path() : exe.parent_path().parent_path();
 }
 
-fs::path default_measure_script() { return fs::path(SPANLIGHT_SOURCE_DIR) / "tools" / "qemu_icount" / "measure_elf.sh"; }
+fs::path source_dir() { return fs::path(SPANLIGHT_SOURCE_DIR); }
+
+fs::path default_measure_script() { return source_dir() / "tools" / "qemu_icount" / "measure_elf.sh"; }
 
 MeasureSetup find_measure_setup(const fs::path& plugin, const fs::path& script) {
   MeasureSetup s{script, plugin, {}};

@@ -29,7 +29,8 @@ struct MeasureSetup {
 
 // The build tree the running binary belongs to (<build>/bin/spanlight -> <build>).
 std::filesystem::path default_build_dir();
-// measure_elf.sh in the source tree this binary was built from.
+// The source tree this binary was built from, and measure_elf.sh in it.
+std::filesystem::path source_dir();
 std::filesystem::path default_measure_script();
 // Checks for qemu-system-arm, arm-none-eabi-nm/size, the script and the plugin.
 MeasureSetup find_measure_setup(const std::filesystem::path& plugin, const std::filesystem::path& script);

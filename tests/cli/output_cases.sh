@@ -139,15 +139,15 @@ bake_folder_rules)
   ;;
 sweep_folder_rules)
   out="$scratch/sweep"
-  small_grid=(--spans 16 --table-bits 8 --newton 1 --depth-bits 24 --modes multipass --filters scene
-              --qemu-grid none --repeats 1 --no-passes --quiet)
+  small_grid=(--span 16 --table-bits 8 --newton 1 --depth-bits 24 --passes multipass --filters scene
+              --qemu-grid none --repeats 1 --no-per-pass --quiet)
   mkdir "$out"
   printf 'mine\n' >"$out/notes.txt"
   run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}"
   expect_status 2
   expect_stderr_has "got 1 other file(s): notes.txt"
   rm "$out/notes.txt"
-  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --spans 4,16 --pictures 2
+  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --span 4,16 --pictures 2
   expect_status 0
   [[ "$(find "$out/images" -name '*-fixed.png' | wc -l)" == 2 ]] || fail "expected 2 pictures"
   # Again with one picture: the earlier pictures go, a file of the user's in images/ stays (--force).

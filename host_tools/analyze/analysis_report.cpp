@@ -146,7 +146,7 @@ std::string proposal_text(const sweep::SweepResult& r, const Proposal& p, const 
     const sweep::SweepRow& def = r.rows[*d];
     const auto a = sweep::cost_of(row, p.axis), b = sweep::cost_of(def, p.axis);
     if (a && b && *p.row != *d)
-      out << "  against the default (" << sweep::label(def.config) << "): " << num(std::round(100.0 * (1.0 - *a / *b)))
+      out << "  against the default (" << sweep::label(def.point) << "): " << num(std::round(100.0 * (1.0 - *a / *b)))
           << " % cheaper, PSNR " << (std::isinf(def.psnr_db) ? "inf" : num(def.psnr_db)) << " dB there\n";
     else if (*p.row == *d)
       out << "  this is the default configuration\n";

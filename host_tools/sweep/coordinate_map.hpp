@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "prepare/prepare.hpp"
+#include "spanlight/knobs.hpp"
 #include "scene/scene.hpp"
 
 namespace spanlight::sweep {

@@ -3,6 +3,7 @@
 #include "compare/compare.hpp"
 #include "float_model/float_model.hpp"
 #include "prepare/prepare.hpp"
+#include "prepare/render_fixed.hpp"
 #include "sweep/csv_io.hpp"
 #include "sweep/filter_override.hpp"
 #include "sweep/reference_in_format.hpp"

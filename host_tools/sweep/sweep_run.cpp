@@ -11,6 +11,7 @@
 #include "compare/compare.hpp"
 #include "float_model/float_model.hpp"
 #include "prepare/prepare.hpp"
+#include "prepare/render_fixed.hpp"
 #include "sweep/coordinate_map.hpp"
 #include "sweep/filter_override.hpp"
 #include "sweep/memory_cost.hpp"

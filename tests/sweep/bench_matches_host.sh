@@ -27,6 +27,6 @@ missing=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
   $col["m7_instructions"] == "n/a" || $col["m0plus_instructions"] == "n/a"' "$out/sweep.csv" | wc -l)
 [ "$missing" -eq 0 ] || { echo "FAIL: $missing row(s) without a target count"; grep "note" "$out/stderr"; failed=1; }
 rows=$(($(wc -l <"$out/sweep.csv") - 1))
-[ "$rows" -eq 128 ] || { echo "FAIL: $rows rows, expected 128"; failed=1; }
+[ "$rows" -eq 64 ] || { echo "FAIL: $rows rows, expected 64"; failed=1; }
 [ "$failed" -eq 0 ] && echo "ok: $rows points, every frame hash equal, every count present"
 exit "$failed"

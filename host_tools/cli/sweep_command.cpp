@@ -86,7 +86,9 @@ Command add_sweep_command(CLI::App& app) {
     const KnobInfo& info = knob_table[i];
     std::string defaults;
     for (const std::string& v : a->grid.values[i]) defaults += (defaults.empty() ? "" : ",") + v;
-    cmd->add_option("--" + std::string(info.name), a->grid.values[i], std::string(info.help) + " (values to sweep)")
+    const bool format = std::string_view(info.name) == "format";  // one: the sweep_bench is built in the baked format
+    cmd->add_option("--" + std::string(info.name), a->grid.values[i],
+                    std::string(info.help) + (format ? " (one: the format the scene's sweep_bench was baked in)" : " (values to sweep)"))
         ->check(CLI::IsMember(knob_choices(info.name)))
         ->delimiter(',')
         ->default_str(defaults);
@@ -97,7 +99,7 @@ Command add_sweep_command(CLI::App& app) {
       ->check(CLI::IsMember({"all", "scene", "nearest", "bilinear"}))->delimiter(',');
   cmd->add_option("--repeats", a->repeats, "host renders per configuration; the fastest counts")->check(CLI::Range(1, 50));
   cmd->add_option("--qemu-grid", a->qemu_grid,
-                  "QEMU runs: cost (table bits 8 and depth 24 only, reused for the rest), full, or none")
+                  "QEMU runs: cost (the default table and depth bits only, reused for the rest), full, or none")
       ->check(CLI::IsMember({"cost", "full", "none"}));
   cmd->add_option("--cpus", a->cpus, "QEMU targets")->check(CLI::IsMember({"cortex-m7", "cortex-m0plus"}))->delimiter(',');
   cmd->add_option("--jobs", a->jobs, "QEMU runs side by side")->check(CLI::Range(1, 64));

@@ -12,7 +12,7 @@
 namespace bench {
 
 struct Request {
-  spanlight::Knobs knobs{};
+  spanlight::Knobs knobs{};  // parse_request changes only the knobs on the command line
   bool force_filter = false;  // false: each texture's filter as baked
   spanlight::Filter filter = spanlight::Filter::bilinear;
   bool per_pass = false;  // one measured region per pass instead of the whole frame

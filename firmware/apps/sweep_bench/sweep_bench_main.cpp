@@ -4,7 +4,8 @@
 // bits and passes are run-time knobs, and the texture filter may be forced. A
 // run renders one frame with the knobs on its command line inside the measured
 // region (with --per-pass, one region per pass, bracketed by render_frame's
-// hooks), logs the frame hash, and exits. The format is the baked one.
+// hooks), logs the frame hash, and exits. Knobs not given are the baked ones; the
+// format must be the baked one.
 //   sweep_bench_<scene>.elf --span 16 --tolerance 3 --table-bits 8 --newton 1
 //                           --depth-bits 24 --passes fused [--filter scene] [--per-pass]
 #include <array>
@@ -104,6 +105,7 @@ RenderStatus render_measured(const PreparedScene& scene, const bench::Request& r
 
 int spanlight::hal::app_main(Args args) {
   bench::Request request;
+  request.knobs = baked::knobs;  // a knob not on the command line is the baked one (the format among them)
   const char* bad = nullptr;
   if (!bench::parse_request(args, request, bad)) {
     log_line(LogLine() << "sweep_bench: bad argument " << (bad ? bad : "?"));

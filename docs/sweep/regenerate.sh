@@ -1,28 +1,35 @@
 #!/usr/bin/env bash
 # Regenerates the committed sweep results, docs/sweep/<scene>/, for every shared scene and the
-# two anchor scenes, with the default grid, counted on Cortex-M7 and Cortex-M0+ in QEMU.
-#   docs/sweep/regenerate.sh [BUILD_DIR]      (default: build; needs bin/spanlight, the
-#                                              firmware trees and the QEMU plugin built)
-# Takes about 5 minutes in all on an idle 2-core machine. Run from anywhere; scene paths in the output are relative
-# to the source tree.
+# two anchor scenes, with the default grid (its values from the knob table: spans 1, 4, 16, 64,
+# every table size, Newton 0 and 1, both depth settings), counted on Cortex-M7 and Cortex-M0+
+# in QEMU through tools/qemu_icount/measure_elf.sh.
+#   docs/sweep/regenerate.sh [BUILD_DIR [OUT_DIR [SWEEP_OPTION...]]]
+#     BUILD_DIR  default build; needs bin/spanlight, the firmware trees (firmware-<cpu>/bin with
+#                the sweep_bench_<scene> ELFs) and the QEMU plugin built
+#     OUT_DIR    default docs/sweep; another folder leaves the committed results alone
+#     SWEEP_OPTION...  passed to every sweep, e.g. a small grid: --span 16,64 --table-bits 8
+# Run from anywhere; scene paths in the output are relative to the source tree.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 build=$(cd "${1:-$root/build}" && pwd)
+out=${2:-$root/docs/sweep}
+shift $(($# > 2 ? 2 : $#))
 cd "$root"
+mkdir -p "$out"
 # Which sources the figures come from: the commit, and any local change to the pipeline.
 {
   echo "commit $(git rev-parse HEAD 2>/dev/null || echo unknown), swept $(date -u +%Y-%m-%d)"
-  git status --short -- firmware fixedpoint 2>/dev/null | sed 's/^/local change: /'
-} >docs/sweep/SOURCE.txt
-# slide_projector, the scene of the target figures, with every configuration counted on QEMU
-# (about 2 minutes); the others with QEMU's cost-relevant grid (under a minute each).
-"$build/bin/spanlight" sweep scenes/slide_projector.json --out docs/sweep/slide_projector --qemu-grid full --pictures 3 \
-  --firmware-dir "$build"
+  git status --short -- pipeline fixedpoint firmware 2>/dev/null | sed 's/^/local change: /'
+} >"$out/SOURCE.txt"
+# slide_projector, the scene of the target figures, with every point counted on QEMU;
+# the others with QEMU's cost-relevant grid (the default table and depth bits only).
+"$build/bin/spanlight" sweep scenes/slide_projector.json --out "$out/slide_projector" --qemu-grid full --pictures 3 \
+  --firmware-dir "$build" "$@"
 for scene in spot_shadow three_projectors horizon; do
-  "$build/bin/spanlight" sweep "scenes/$scene.json" --out "docs/sweep/$scene" --pictures 3 --firmware-dir "$build"
+  "$build/bin/spanlight" sweep "scenes/$scene.json" --out "$out/$scene" --pictures 3 --firmware-dir "$build" "$@"
 done
-# The anchor scenes of shared/anchors.md (RGB565, baked with 16-bit depth), for the comparison with tgx.
+# The anchor scenes of shared/anchors.md (RGB565), for the comparison with tgx.
 for scene in textured_room textured_room_nearest; do
-  "$build/bin/spanlight" sweep "scenes/$scene.json" --out "docs/sweep/$scene" --format rgb565 --pictures 2 \
-    --firmware-dir "$build"
+  "$build/bin/spanlight" sweep "scenes/$scene.json" --out "$out/$scene" --format rgb565 --pictures 2 \
+    --firmware-dir "$build" "$@"
 done

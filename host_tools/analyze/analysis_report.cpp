@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sweep/report_tables.hpp"
+#include "bake/knob_text.hpp"
 
 namespace spanlight::analyze {
 namespace {
@@ -87,8 +88,8 @@ std::string formats_text(const std::vector<FormatChoice>& choices) {
   return out.str();
 }
 
-std::string bake_command_line(const std::string& scene_file, const sweep::SweepConfig& c, PixelFormat format) {
-  return "spanlight bake " + scene_file + " --out baked/ " + sweep::knob_arguments(c, format);
+std::string bake_command_line(const std::string& scene_file, const Knobs& knobs) {
+  return "spanlight bake " + scene_file + " --out baked/ " + knob_command_line(knobs);
 }
 
 std::string measured_json(const sweep::SweepResult& r, const sweep::SweepRow& row, const AccuracyTarget& target) {
@@ -120,10 +121,10 @@ std::string proposal_text(const sweep::SweepResult& r, const Proposal& p, const 
   char line[400];
   std::snprintf(line, sizeof line,
                 "  %s\n  error: PSNR %s dB, max %.0f LSB, mean %.3f LSB, %.3f %% > 2 LSB, %.3f %% > 8 LSB, worst texel %.4f\n",
-                sweep::label(row.config).c_str(), std::isinf(row.psnr_db) ? "inf" : num(row.psnr_db).c_str(), row.max_lsb,
+                sweep::label(row.point).c_str(), std::isinf(row.psnr_db) ? "inf" : num(row.psnr_db).c_str(), row.max_lsb,
                 row.mean_lsb, row.pct_over_2, row.pct_over_8, row.texcoord_err_max());
   out << line;
-  if (row.config.filter != sweep::FilterChoice::scene) {
+  if (row.point.filter != sweep::FilterChoice::scene) {
     std::snprintf(line, sizeof line, "  against the scene as authored (filters as written): PSNR %s dB, max %.0f LSB\n",
                   std::isinf(row.psnr_vs_scene_db) ? "inf" : num(row.psnr_vs_scene_db).c_str(), row.max_vs_scene_lsb);
     out << line;
@@ -145,7 +146,7 @@ std::string proposal_text(const sweep::SweepResult& r, const Proposal& p, const 
     const sweep::SweepRow& def = r.rows[*d];
     const auto a = sweep::cost_of(row, p.axis), b = sweep::cost_of(def, p.axis);
     if (a && b && *p.row != *d)
-      out << "  against the default (" << sweep::label(def.config) << "): " << num(std::round(100.0 * (1.0 - *a / *b)))
+      out << "  against the default (" << sweep::label(def.point) << "): " << num(std::round(100.0 * (1.0 - *a / *b)))
           << " % cheaper, PSNR " << (std::isinf(def.psnr_db) ? "inf" : num(def.psnr_db)) << " dB there\n";
     else if (*p.row == *d)
       out << "  this is the default configuration\n";

@@ -18,7 +18,7 @@ std::string formats_text(const std::vector<FormatChoice>& choices);
 std::string proposal_text(const sweep::SweepResult& result, const Proposal& proposal, const AccuracyTarget& target);
 
 // `spanlight bake SCENE --out DIR <knobs>` for a configuration.
-std::string bake_command_line(const std::string& scene_file, const sweep::SweepConfig& config, PixelFormat format);
+std::string bake_command_line(const std::string& scene_file, const Knobs& knobs);
 
 // The measured figures of a row as a JSON object (for the config file's "measured").
 std::string measured_json(const sweep::SweepResult& result, const sweep::SweepRow& row, const AccuracyTarget& target);

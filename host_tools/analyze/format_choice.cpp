@@ -1,8 +1,10 @@
 #include "analyze/format_choice.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "bake/knob_text.hpp"
 #include "prepare/prepare.hpp"
 
 namespace spanlight::analyze {
@@ -47,6 +49,13 @@ FormatChoice uv_of(const ObjectRanges& o) {
   return c;
 }
 
+// The depth bits the pipeline offers, smallest first: the depth-bits knob's values (knob_table).
+std::vector<int> depth_candidates() {
+  std::vector<int> bits;
+  for (const std::string& value : knob_choices("depth-bits")) bits.push_back(std::stoi(value));
+  return bits;
+}
+
 FormatChoice eye_depth(const SceneRanges& r) {
   const DepthRanges& d = r.depth;
   const std::string visible = d.visible.empty ? std::string("nothing visible")
@@ -54,7 +63,7 @@ FormatChoice eye_depth(const SceneRanges& r) {
   FormatChoice c{"eye depth buffer", visible + ", " + std::to_string(d.gaps.size()) + " pixels with a second object behind",
                  {}, {}, {}};
   const double allowed = depth_risk_threshold * static_cast<double>(d.covered);
-  for (int bits : {16, 24}) {
+  for (const int bits : depth_candidates()) {
     const std::size_t risk = d.at_risk(bits);
     c.candidates.push_back({std::to_string(bits) + " bits", std::ldexp(1.0, -bits), static_cast<double>(risk) <= allowed, true,
                             "too coarse", std::to_string(risk) + " of " + std::to_string(d.covered) +
@@ -68,7 +77,7 @@ FormatChoice eye_depth(const SceneRanges& r) {
 FormatChoice shadow_depth(const ProjectorRanges& p) {
   FormatChoice c{"shadow map of " + p.name + " (" + std::to_string(p.map_size) + "^2)",
                  "bias " + num(p.bias) + ", depth [" + num(p.window_depth.lo) + ", " + num(p.window_depth.hi) + "]", {}, {}, {}};
-  for (int bits : {16, 24}) {
+  for (const int bits : depth_candidates()) {
     const double steps = p.bias * std::ldexp(1.0, bits);
     c.candidates.push_back({std::to_string(bits) + " bits", std::ldexp(1.0, -bits), steps >= 2.0, true, "too coarse",
                             "bias = " + num(steps) + " steps (>= 2 wanted)"});
@@ -98,11 +107,11 @@ std::vector<FormatChoice> choose_formats(const SceneRanges& r) {
 }
 
 int required_depth_bits(const std::vector<FormatChoice>& choices) {
-  int bits = 16;
+  int bits = depth_candidates().front();
   for (const FormatChoice& c : choices) {
     if (c.quantity != "eye depth buffer" && c.quantity.rfind("shadow map", 0) != 0) continue;
-    if (!c.chosen) return 0;  // neither 16 nor 24 bits is enough
-    if (c.candidates[*c.chosen].format == "24 bits") bits = 24;
+    if (!c.chosen) return 0;  // no depth setting is enough
+    bits = std::max(bits, std::stoi(c.candidates[*c.chosen].format));  // "24 bits"
   }
   return bits;
 }

@@ -30,8 +30,8 @@ Proposal cheapest_meeting(const sweep::SweepResult& r, const AccuracyTarget& tar
   const double default_rms = d ? r.rows[*d].rms_vs_scene_lsb : 0.0;
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const sweep::SweepRow& row = r.rows[i];
-    if (row.config.depth_bits < c.min_depth_bits) continue;
-    if (!c.allow_filter_change && row.config.filter != sweep::FilterChoice::scene) continue;
+    if (row.point.knobs.depth_bits < c.min_depth_bits) continue;
+    if (!c.allow_filter_change && row.point.filter != sweep::FilterChoice::scene) continue;
     if (!meets(row, target, default_rms)) continue;
     const std::optional<double> cost = sweep::cost_of(row, p.axis);
     if (!cost) continue;

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "bake/bake.hpp"
+#include "bake/knob_text.hpp"
 #include "spanlight/scene_features.hpp"
 
 namespace spanlight::bake {
@@ -88,10 +89,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << ",\n    .table_bits = " << int(f.table_bits) << ", .newton = " << int(f.newton) << ", .depth_bits = " << int(f.depth_bits)
       << ",\n    .repeat_sizes = {" << int(f.repeat_sizes[0]) << ", " << int(f.repeat_sizes[1]) << ", " << int(f.repeat_sizes[2])
       << ", " << int(f.repeat_sizes[3]) << "}, .any_repeat_size = " << boolean(f.any_repeat_size) << "};\n"
-      << "// As `spanlight render` takes them: --span " << knob_value(knobs, "span") << " --tolerance "
-      << knob_value(knobs, "tolerance") << " --table-bits " << knob_value(knobs, "table-bits") << " --newton "
-      << knob_value(knobs, "newton") << " --depth-bits " << knob_value(knobs, "depth-bits") << " --format "
-      << knob_value(knobs, "format") << " --passes " << knob_value(knobs, "passes") << "\n"
+      << "// As `spanlight render` takes them: " << knob_command_line(knobs) << "\n"
       << "inline constexpr spanlight::Knobs knobs{" << int(knobs.span_log2) << ", " << int(knobs.tolerance_log2) << ", "
       << int(knobs.table_bits) << ", " << int(knobs.newton) << ", " << int(knobs.depth_bits) << ", features.format, spanlight::Passes::"
       << (knobs.passes == Passes::fused ? "fused" : "multipass") << "};\n"
@@ -100,6 +98,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << "inline constexpr std::uint16_t width = " << s.width << ";\n"
       << "inline constexpr std::uint16_t height = " << s.height << ";\n"
       << "inline constexpr int projector_count = " << int(s.projector_count) << ";\n"
+      << "inline constexpr int texture_count = " << int(s.texture_count) << ";  // TextureData entries of the scene\n"
       << "inline constexpr std::uint16_t max_vertex_count = " << s.max_vertex_count << ";  // the vertex buffer a frame needs\n"
       << "inline constexpr std::uint32_t shadow_map_texels = " << shadow_texels << ";  // all maps together\n"
       << "// map_size of each projector, 0 where it casts no shadow.\n"

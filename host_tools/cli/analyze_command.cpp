@@ -15,7 +15,8 @@
 #include "io/atomic_write.hpp"
 #include "prepare/prepare.hpp"
 #include "sweep/csv_io.hpp"
-#include "sweep/qemu_bench.hpp"
+#include "bake/knob_text.hpp"
+#include "sweep/measurement.hpp"
 #include "sweep/sweep_run.hpp"
 
 namespace spanlight::cli {
@@ -35,12 +36,13 @@ sweep::SweepResult measure(const scene::Scene& scene, const AnalyzeArgs& a) {
   sweep::SweepOptions o;
   if (!a.allow_filter_change) o.grid.filters = {sweep::FilterChoice::scene};
   else o.grid.filters.clear();
-  o.format = a.format == "rgb565" ? PixelFormat::rgb565 : PixelFormat::rgb888;
+  for (std::size_t i = 0; i < std::size(knob_table); ++i)
+    if (std::string_view(knob_table[i].name) == "format") o.grid.values[i] = {a.format};
   o.qemu = a.qemu_grid == "none" ? sweep::QemuGrid::none : a.qemu_grid == "full" ? sweep::QemuGrid::full : sweep::QemuGrid::cost;
   o.jobs = a.jobs;
-  o.passes = false;
+  o.per_pass = false;
   o.firmware_dir = a.firmware_dir.empty() ? sweep::default_build_dir() : std::filesystem::path(a.firmware_dir);
-  o.runner = sweep::default_runner();
+  o.measure_script = sweep::default_measure_script();
   sweep::Progress progress(stderr, a.quiet);
   sweep::SweepResult r = sweep::run_sweep(scene, o, progress);
   for (const std::string& note : r.notes) std::fprintf(stderr, "note: %s\n", note.c_str());  // also when quiet
@@ -66,8 +68,10 @@ int run_analyze(const AnalyzeArgs& a) {
   analyze::Constraints constraints;
   constraints.min_depth_bits = analyze::required_depth_bits(formats);
   if (constraints.min_depth_bits == 0) {
-    std::printf("Depth: neither 16 nor 24 bits resolves this scene everywhere; proposing 24 bits.\n\n");
-    constraints.min_depth_bits = 24;
+    Knobs deepest;
+    (void)set_knob(deepest, "depth-bits", knob_choices("depth-bits").back());
+    std::printf("Depth: no depth setting resolves this scene everywhere; proposing %d bits.\n\n", deepest.depth_bits);
+    constraints.min_depth_bits = deepest.depth_bits;
   }
   constraints.allow_filter_change = a.allow_filter_change;
 
@@ -77,13 +81,12 @@ int run_analyze(const AnalyzeArgs& a) {
   if (!proposal.row) return exit_target_missed;
 
   const sweep::SweepRow& row = result.rows[*proposal.row];
-  const PixelFormat format = result.format == "rgb565" ? PixelFormat::rgb565 : PixelFormat::rgb888;
-  std::printf("\nBake it with:\n  %s\n", analyze::bake_command_line(a.scene, row.config, format).c_str());
-  if (row.config.filter != sweep::FilterChoice::scene)
+  std::printf("\nBake it with:\n  %s\n", analyze::bake_command_line(a.scene, row.point.knobs).c_str());
+  if (row.point.filter != sweep::FilterChoice::scene)
     std::printf("  (the proposal forces every texture to %s: bake --config applies that; a plain bake keeps the scene's filters)\n",
-                sweep::to_string(row.config.filter));
+                sweep::to_string(row.point.filter));
   if (!a.write_config.empty()) {
-    io::write_file_atomically(a.write_config, analyze::to_json({row.config, format}, analyze::measured_json(result, row, target)),
+    io::write_file_atomically(a.write_config, analyze::to_json(row.point, analyze::measured_json(result, row, target)),
                               "--write-config", inputs);
     std::printf("or:\n  spanlight bake %s --out baked/ --config %s\n", a.scene.c_str(), a.write_config.c_str());
   }
@@ -107,7 +110,8 @@ Command add_analyze_command(CLI::App& app) {
   cmd->add_option("--write-config", a->write_config,
                   "write the proposal as JSON for `spanlight bake --config` (a new file or a regular one to replace)");
   cmd->add_flag("--allow-filter-change", a->allow_filter_change, "also consider forcing every texture to one filter");
-  cmd->add_option("--format", a->format, "framebuffer format")->check(CLI::IsMember({"rgb888", "rgb565"}));
+  cmd->add_option("--format", a->format, "framebuffer format (the scene's sweep_bench is built in the one it was baked with)")
+      ->check(CLI::IsMember(knob_choices("format")));
   cmd->add_option("--qemu-grid", a->qemu_grid, "QEMU runs when sweeping: cost, full or none")
       ->check(CLI::IsMember({"cost", "full", "none"}));
   cmd->add_option("--firmware-dir", a->firmware_dir, "build tree with the sweep_bench ELFs (default: this binary's)");

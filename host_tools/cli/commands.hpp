@@ -18,5 +18,6 @@ Command add_compare_command(CLI::App& app);
 Command add_bake_command(CLI::App& app);
 Command add_sweep_command(CLI::App& app);
 Command add_analyze_command(CLI::App& app);
+Command add_cost_command(CLI::App& app);
 
 }  // namespace spanlight::cli

@@ -1,5 +1,7 @@
 #include "cli/knobs.hpp"
 
+#include "bake/knob_text.hpp"
+
 #include <string>
 #include <vector>
 
@@ -8,8 +10,8 @@ namespace spanlight::cli {
 void add_knob_options(CLI::App& cmd, Knobs& knobs) {
   const Knobs defaults{};
   for (const KnobInfo& info : knob_table) {
-    const std::vector<std::string> allowed(info.values, info.values + info.value_count);
     const std::string name = info.name;
+    const std::vector<std::string> allowed = knob_choices(name);
     cmd.add_option_function<std::string>(
            "--" + name, [&knobs, name](const std::string& value) { (void)set_knob(knobs, name, value); }, info.help)
         ->check(CLI::IsMember(allowed))

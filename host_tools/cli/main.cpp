@@ -15,6 +15,9 @@ int main(int argc, char** argv) {
       {"render", spanlight::cli::add_render_command(app)},
       {"compare", spanlight::cli::add_compare_command(app)},
       {"bake", spanlight::cli::add_bake_command(app)},
+      {"sweep", spanlight::cli::add_sweep_command(app)},
+      {"analyze", spanlight::cli::add_analyze_command(app)},
+      {"cost", spanlight::cli::add_cost_command(app)},
   };
   try {
     app.parse(argc, argv);

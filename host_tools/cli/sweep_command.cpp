@@ -7,7 +7,8 @@
 #include "cli/load.hpp"
 #include "io/output_folder.hpp"
 #include "prepare/prepare.hpp"
-#include "sweep/qemu_bench.hpp"
+#include "bake/knob_text.hpp"
+#include "sweep/measurement.hpp"
 #include "sweep/report_files.hpp"
 #include "sweep/report_plots.hpp"
 #include "sweep/report_tables.hpp"
@@ -18,34 +19,27 @@ namespace {
 
 struct SweepArgs {
   std::string scene, out;
-  std::vector<int> spans{1, 2, 4, 8, 16, 32}, tolerances{3}, table_bits{6, 8, 10, 12}, newton{0, 1}, depth_bits{16, 24};
-  std::vector<std::string> modes{"multipass", "fused"}, filters{"all"};
-  std::string format = "rgb888", qemu_grid = "cost", firmware_dir, runner;
+  sweep::GridSpec grid = sweep::default_grid();  // the knob options replace a knob's list
+  std::vector<std::string> filters{"all"};
+  std::string qemu_grid = "cost", firmware_dir, measure_script;
   std::vector<std::string> cpus{"cortex-m7", "cortex-m0plus"};
   int repeats = 3, jobs = 2, pictures = 4;
-  bool no_passes = false, quiet = false, force = false;
+  bool no_per_pass = false, quiet = false, force = false;
 };
 
 sweep::SweepOptions to_options(const SweepArgs& a) {
   sweep::SweepOptions o;
-  o.grid.spans = a.spans;
-  o.grid.tolerances = a.tolerances;
-  o.grid.table_bits = a.table_bits;
-  o.grid.newton = a.newton;
-  o.grid.depth_bits = a.depth_bits;
-  o.grid.fused.clear();
-  for (const std::string& m : a.modes) o.grid.fused.push_back(m == "fused");
+  o.grid = a.grid;
   o.grid.filters.clear();  // empty: the scene's distinct choices
   for (const std::string& f : a.filters)
     if (f != "all") o.grid.filters.push_back(sweep::filter_from_string(f));
-  o.format = a.format == "rgb565" ? PixelFormat::rgb565 : PixelFormat::rgb888;
   o.host_repeats = a.repeats;
   o.qemu = a.qemu_grid == "none" ? sweep::QemuGrid::none : a.qemu_grid == "full" ? sweep::QemuGrid::full : sweep::QemuGrid::cost;
   o.cpus = a.cpus;
   o.jobs = a.jobs;
-  o.passes = !a.no_passes;
+  o.per_pass = !a.no_per_pass;
   o.firmware_dir = a.firmware_dir.empty() ? sweep::default_build_dir() : std::filesystem::path(a.firmware_dir);
-  o.runner = a.runner.empty() ? sweep::default_runner() : std::filesystem::path(a.runner);
+  o.measure_script = a.measure_script.empty() ? sweep::default_measure_script() : std::filesystem::path(a.measure_script);
   return o;
 }
 
@@ -53,12 +47,18 @@ int run_sweep_command(const SweepArgs& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
   if (!prepare_or_report(*scene)) return exit_bad_input;  // reports a scene the fixed formats cannot hold
-  io::OutputFolder out(a.out, "--out", a.force, inputs_of(*scene));  // checked before the sweep's minutes of work
   const sweep::SweepOptions options = to_options(a);
+  try {
+    (void)sweep::grid_format(options.grid);  // one format: the bench's
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "%s: %s\n", a.scene.c_str(), e.what());
+    return exit_bad_input;
+  }
+  io::OutputFolder out(a.out, "--out", a.force, inputs_of(*scene));  // checked before the sweep's minutes of work
   sweep::Progress progress(stderr, a.quiet);
   const sweep::SweepResult result = sweep::run_sweep(*scene, options, progress);
   for (const std::string& note : result.notes) std::fprintf(stderr, "note: %s\n", note.c_str());  // also when quiet
-  sweep::write_report(out, *scene, result, options.format, static_cast<std::size_t>(a.pictures));
+  sweep::write_report(out, *scene, result, static_cast<std::size_t>(a.pictures));
 
   std::printf("swept %s: %zu configurations in %.0f s -> %s/{sweep.csv,report.html,front.md}\n", result.scene_name.c_str(),
               result.rows.size(), result.seconds, a.out.c_str());
@@ -81,30 +81,34 @@ Command add_sweep_command(CLI::App& app) {
                   "what spanlight wrote there")
       ->required();
   cmd->add_flag("--force", a->force, "write into --out even when it holds other files (none is removed)");
-  cmd->add_option("--spans", a->spans, "span lengths in pixels")->check(CLI::IsMember({1, 2, 4, 8, 16, 32, 64}))->delimiter(',');
-  cmd->add_option("--tolerances", a->tolerances, "span tolerances (2^-N texel; 0: never shorten)")->check(CLI::Range(0, 10))->delimiter(',');
-  cmd->add_option("--table-bits", a->table_bits, "reciprocal table sizes")->check(CLI::IsMember({6, 8, 10, 12}))->delimiter(',');
-  cmd->add_option("--newton", a->newton, "Newton steps (the firmware bench has 0 and 1)")->check(CLI::IsMember({0, 1, 2}))->delimiter(',');
-  cmd->add_option("--depth-bits", a->depth_bits, "depth bits")->check(CLI::IsMember({16, 24}))->delimiter(',');
-  cmd->add_option("--modes", a->modes, "multipass and/or fused")->check(CLI::IsMember({"multipass", "fused"}))->delimiter(',');
+  // Every knob of knob_table as a comma-separated list of its values, e.g. --span 4,16 --passes fused,multipass.
+  for (std::size_t i = 0; i < std::size(knob_table); ++i) {
+    const KnobInfo& info = knob_table[i];
+    std::string defaults;
+    for (const std::string& v : a->grid.values[i]) defaults += (defaults.empty() ? "" : ",") + v;
+    const bool format = std::string_view(info.name) == "format";  // one: the sweep_bench is built in the baked format
+    cmd->add_option("--" + std::string(info.name), a->grid.values[i],
+                    std::string(info.help) + (format ? " (one: the format the scene's sweep_bench was baked in)" : " (values to sweep)"))
+        ->check(CLI::IsMember(knob_choices(info.name)))
+        ->delimiter(',')
+        ->default_str(defaults);
+  }
   cmd->add_option("--filters", a->filters,
                   "texture filters: scene (as the scene says), nearest or bilinear (forced on every texture), "
                   "all (scene plus each forced filter that changes the scene)")
       ->check(CLI::IsMember({"all", "scene", "nearest", "bilinear"}))->delimiter(',');
-  cmd->add_option("--format", a->format, "framebuffer format (the scene's sweep_bench is built as baked)")
-      ->check(CLI::IsMember({"rgb888", "rgb565"}));
   cmd->add_option("--repeats", a->repeats, "host renders per configuration; the fastest counts")->check(CLI::Range(1, 50));
   cmd->add_option("--qemu-grid", a->qemu_grid,
-                  "QEMU runs: cost (table bits 8 and depth 24 only, reused for the rest), full, or none")
+                  "QEMU runs: cost (the default table and depth bits only, reused for the rest), full, or none")
       ->check(CLI::IsMember({"cost", "full", "none"}));
   cmd->add_option("--cpus", a->cpus, "QEMU targets")->check(CLI::IsMember({"cortex-m7", "cortex-m0plus"}))->delimiter(',');
   cmd->add_option("--jobs", a->jobs, "QEMU runs side by side")->check(CLI::Range(1, 64));
   cmd->add_option("--firmware-dir", a->firmware_dir,
                   "build tree holding firmware-<cpu>/bin/sweep_bench_<scene>.elf and the QEMU plugin "
                   "(default: the build tree of this binary)");
-  cmd->add_option("--qemu-runner", a->runner, "run_on_qemu.sh (default: the one in this binary's source tree)");
+  cmd->add_option("--measure-script", a->measure_script, "measure_elf.sh (default: the one in this binary's source tree)");
   cmd->add_option("--pictures", a->pictures, "front points shown as fixed/float/difference images")->check(CLI::Range(0, 32));
-  cmd->add_flag("--no-passes", a->no_passes, "skip the per-pass count of the default configuration");
+  cmd->add_flag("--no-per-pass", a->no_per_pass, "skip the per-pass count of the default knobs");
   cmd->add_flag("--quiet", a->quiet, "no progress on stderr");
   return [a] { return run_sweep_command(*a); };
 }

@@ -22,6 +22,12 @@ bool interior(const CoordinateMap& m, int x, int y) {
 
 double axis_error(double fu, double fv, double ru, double rv) { return std::max(std::fabs(fu - ru), std::fabs(fv - rv)); }
 
+// The difference of two coordinates on a circle of `period` texels (0: on the line).
+double wrapped(double difference, int period) {
+  if (period <= 0) return difference;
+  return difference - period * std::round(difference / period);
+}
+
 }  // namespace
 
 CoordinateError compare_coordinates(const CoordinateMap& fixed, const CoordinateMap& ref,
@@ -44,7 +50,11 @@ CoordinateError compare_coordinates(const CoordinateMap& fixed, const Coordinate
         continue;
       }
       if (textured_objects[static_cast<std::size_t>(o)]) {
-        const double d = axis_error(fixed.u[p], fixed.v[p], ref.u[p], ref.v[p]);
+        const auto object = static_cast<std::size_t>(o);
+        const int wrap_u = object < fixed.wrap_width.size() ? fixed.wrap_width[object] : 0;
+        const int wrap_v = object < fixed.wrap_height.size() ? fixed.wrap_height[object] : 0;
+        const double d = std::max(std::fabs(wrapped(fixed.u[p] - ref.u[p], wrap_u)),
+                                  std::fabs(wrapped(fixed.v[p] - ref.v[p], wrap_v)));
         e.uv_max = std::max(e.uv_max, d);
         uv_sum += d;
         ++e.uv_pixels;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "prepare/prepare.hpp"
-#include "prepare/render_fixed.hpp"
+#include "spanlight/knobs.hpp"
 #include "scene/scene.hpp"
 
 namespace spanlight::sweep {
@@ -26,6 +26,9 @@ struct CoordinateMap {
   std::vector<std::int64_t> triangle;   // float model only: which mesh triangle, for the interior test
   std::vector<double> u, v;             // texels; only meaningful where the object is textured
   std::vector<ProjectorCoordinate> projector;  // pixel-major, `projectors` per pixel
+  // Fixed pipeline only: per object, the texture size at which its uv wraps (0: no wrap).
+  // A repeating texture is stepped modulo its size, so uv is compared modulo it.
+  std::vector<int> wrap_width, wrap_height;
 
   std::size_t pixels() const { return static_cast<std::size_t>(width) * static_cast<std::size_t>(height); }
   const ProjectorCoordinate& at(std::size_t pixel, int j) const {
@@ -36,11 +39,11 @@ struct CoordinateMap {
 // The float model's exact values (double, the exact divide at every pixel).
 CoordinateMap float_coordinates(const scene::Scene& scene);
 
-// The fixed pipeline's values: a debug kernel in the eye pass records what the
-// span walker hands each pixel (depth test `less`, as the fused pass, so the
-// same surface wins as in the real passes). Table and Newton choose the
-// reciprocal; span, tolerance and depth bits come from `options.precision`.
-CoordinateMap fixed_coordinates(const prepare::PreparedStorage& prepared, const prepare::FixedOptions& options);
+// The fixed pipeline's values: a probe kernel in the eye pass records what the
+// span walk hands each pixel (depth test `less`, as the fused pass, so the
+// same surface wins as in the real passes), with the knobs' reciprocal, span,
+// tolerance and depth bits.
+CoordinateMap fixed_coordinates(const prepare::PreparedStorage& prepared, const Knobs& knobs);
 
 // Worst and mean |fixed - float| in texels (the larger of the two axes), over
 // pixels where both show the same object and the float model's 3x3

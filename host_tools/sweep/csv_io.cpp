@@ -53,16 +53,26 @@ std::optional<T> to_optional(const std::string& text) {
   return static_cast<T>(std::stoull(text));
 }
 
+// The knobs' columns: each knob of knob_table by its name, but the format, which is the sweep's own column.
+std::vector<std::string> knob_columns() {
+  std::vector<std::string> names;
+  for (const KnobInfo& info : knob_table)
+    if (std::string_view(info.name) != "format") names.emplace_back(info.name);
+  return names;
+}
+
 }  // namespace
 
 std::vector<std::string> csv_columns() {
-  return {"scene", "format", "covered_pixels", "label", "span", "tolerance_log2", "table_bits", "newton", "depth_bits",
-          "fused", "filter", "psnr_db", "rms_lsb", "max_lsb", "mean_lsb", "pct_over_2_lsb", "pct_over_8_lsb",
+  std::vector<std::string> columns{"scene", "format", "covered_pixels", "label"};
+  for (const std::string& knob : knob_columns()) columns.push_back(knob);
+  columns.insert(columns.end(), {"filter", "psnr_db", "rms_lsb", "max_lsb", "mean_lsb", "pct_over_2_lsb", "pct_over_8_lsb",
           "psnr_vs_scene_db", "rms_vs_scene_lsb", "max_vs_scene_lsb", "uv_err_max_texels", "uv_err_mean_texels", "st_err_max_texels", "st_err_mean_texels",
           "texcoord_err_max_texels", "visibility_mismatches", "host_ms", "float_ms", "host_ratio",
           "m7_instructions", "m7_per_covered_pixel", "m7_source", "m0plus_instructions", "m0plus_per_covered_pixel",
           "m0plus_source", "hash_checked", "table_bytes", "buffer_bytes", "flash_m7", "flash_m0plus", "is_default",
-          "front_m7", "front_m0plus", "front_host"};
+          "front_m7", "front_m0plus", "front_host"});
+  return columns;
 }
 
 std::string to_csv(const SweepResult& r) {
@@ -71,10 +81,10 @@ std::string to_csv(const SweepResult& r) {
   for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
   out << "\n";
   for (const SweepRow& row : r.rows) {
-    const SweepConfig& c = row.config;
-    out << no_commas(r.scene_name) << "," << r.format << "," << r.covered_pixels << "," << label(c) << "," << c.span << ","
-        << c.tolerance_log2 << "," << c.table_bits << "," << c.newton << "," << c.depth_bits << "," << (c.fused ? 1 : 0)
-        << "," << to_string(c.filter) << "," << num(row.psnr_db, 3) << "," << num(row.rms_lsb, 4) << ","
+    const GridPoint& c = row.point;
+    out << no_commas(r.scene_name) << "," << r.format << "," << r.covered_pixels << "," << label(c) << ",";
+    for (const std::string& knob : knob_columns()) out << knob_value(c.knobs, knob) << ",";
+    out << to_string(c.filter) << "," << num(row.psnr_db, 3) << "," << num(row.rms_lsb, 4) << ","
         << num(row.max_lsb, 0) << "," << num(row.mean_lsb, 4) << "," << num(row.pct_over_2, 4) << ","
         << num(row.pct_over_8, 4) << "," << num(row.psnr_vs_scene_db, 3) << "," << num(row.rms_vs_scene_lsb, 4) << ","
         << num(row.max_vs_scene_lsb, 0) << "," << num(row.uv_err_max, 5) << "," << num(row.uv_err_mean, 5) << ","
@@ -112,13 +122,13 @@ SweepResult read_csv(const std::filesystem::path& file) {
       r.format = f["format"];
       r.covered_pixels = std::stoull(f["covered_pixels"]);
       SweepRow row;
-      SweepConfig& c = row.config;
-      c.span = std::stoi(f["span"]);
-      c.tolerance_log2 = std::stoi(f["tolerance_log2"]);
-      c.table_bits = std::stoi(f["table_bits"]);
-      c.newton = std::stoi(f["newton"]);
-      c.depth_bits = std::stoi(f["depth_bits"]);
-      c.fused = f["fused"] == "1";
+      GridPoint& c = row.point;
+      for (const std::string& knob : knob_columns()) {
+        if (set_knob(c.knobs, knob, f[knob]) != KnobError::ok)
+          throw std::invalid_argument(knob + ": expected one of " + choice_list(knob) + ", not \"" + f[knob] + "\"");
+      }
+      if (set_knob(c.knobs, "format", f["format"]) != KnobError::ok)
+        throw std::invalid_argument("format: expected one of " + choice_list("format") + ", not \"" + f["format"] + "\"");
       c.filter = filter_from_string(f["filter"]);
       row.psnr_db = to_double(f["psnr_db"]);
       row.rms_lsb = to_double(f["rms_lsb"]);

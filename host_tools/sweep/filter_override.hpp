@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "scene/scene.hpp"
-#include "sweep/sweep_config.hpp"
+#include "sweep/grid.hpp"
 
 namespace spanlight::sweep {
 

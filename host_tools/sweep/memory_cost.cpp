@@ -5,84 +5,79 @@
 #include <regex>
 #include <sstream>
 
-#include "spanlight/buffers.hpp"
-#include "spanlight/project.hpp"
+#include "spanlight/1_vertex/project.hpp"
+#include "spanlight/render.hpp"
 
 namespace spanlight::sweep {
 namespace {
 
-// project.hpp's VertexDivider has its own table, whose size is not exposed:
-// find it by comparing its results with each candidate table (with two Newton
-// steps the candidates agree to ~2^-29 but not bit for bit on every input).
-template <int B>
-constexpr bool vertex_divider_uses() {
-  for (std::uint32_t i = 1; i < 200; ++i) {
-    const std::int64_t w = std::int64_t{i} * 2654435761 % 4000000000 + 16;
-    const VertexDivider d(w);
-    if (d.rcp.mantissa != fixedpoint::reciprocal<B, 2>(static_cast<std::uint32_t>(w >> d.k)).mantissa) return false;
-  }
-  return true;
+// The fields of a demangled Features literal ("spanlight::Features{(unsigned char)4, true, ...}"),
+// in the struct's order, trailing zero ones left out; table_bits and newton are the 11th and 12th.
+constexpr std::size_t table_bits_field = 10, newton_field = 11;
+
+int field_value(const std::string& text) {
+  const std::size_t close = text.rfind(')');
+  return std::stoi(close == std::string::npos ? text : text.substr(close + 1));
 }
-constexpr int vertex_table_bits = vertex_divider_uses<6>()    ? 6
-                                  : vertex_divider_uses<8>()  ? 8
-                                  : vertex_divider_uses<10>() ? 10
-                                  : vertex_divider_uses<12>() ? 12
-                                                              : 0;
-static_assert(vertex_table_bits != 0, "project.hpp's vertex divide no longer uses reciprocal<B, 2>: update table_bytes");
 
 }  // namespace
 
-int vertex_table_bits_in_use() { return vertex_table_bits; }
-
 std::size_t table_bytes(int table_bits) {
   const std::size_t span_table = std::size_t{2} << table_bits;
-  const std::size_t vertex_table = std::size_t{2} << vertex_table_bits;
-  return table_bits == vertex_table_bits ? vertex_table : span_table + vertex_table;
+  const std::size_t vertex_table = std::size_t{2} << vertex_divide_table_bits;
+  return table_bits == vertex_divide_table_bits ? vertex_table : span_table + vertex_table;
 }
 
-std::size_t buffer_bytes(const PreparedScene& s, PixelFormat format, const SweepConfig& c) {
+std::size_t buffer_bytes(const PreparedScene& s, const Knobs& knobs) {
   const std::size_t pixels = std::size_t{s.width} * s.height;
-  const std::size_t depth_size = c.depth_bits <= 16 ? 2 : 4;
-  std::size_t bytes = pixels * (format == PixelFormat::rgb565 ? 2 : 3) + pixels * depth_size;
+  const std::size_t depth_size = knobs.depth_bits <= 16 ? 2 : 4;
+  const std::size_t colour_size = knobs.format == PixelFormat::rgb888 ? 3 : 2;
+  std::size_t bytes = pixels * (colour_size + depth_size) + std::size_t{s.max_vertex_count} * sizeof(CachedVertex);
   for (int j = 0; j < s.projector_count; ++j)
     if (s.projectors[j].shadows) bytes += std::size_t{s.projectors[j].map_size} * s.projectors[j].map_size * depth_size;
-  if (!c.fused) bytes += tie_mask_bytes(s.width, s.height);
+  if (knobs.passes == Passes::multipass) bytes += tie_mask_bytes(static_cast<std::uint32_t>(pixels));
   return bytes;
 }
 
 std::string classify_symbol(const std::string& name, int& table_bits, int& newton) {
-  static const std::regex reciprocal(R"(TableReciprocal<(\d+), (\d+)>)");
-  static const std::regex measured(R"(bench::render_measured<(\d+), (\d+)>)");
+  static const std::regex features(R"(spanlight::Features\{([^}]*))");
   static const std::regex table(R"(^fixedpoint::reciprocal_table<(\d+)>$)");
   std::smatch m;
-  if (name.find("render_by_pass") != std::string::npos) return "";  // the bench's own per-pass driver
-  if (std::regex_search(name, m, measured) || std::regex_search(name, m, reciprocal)) {
-    table_bits = std::stoi(m[1]);
-    newton = std::stoi(m[2]);
-    return "instantiation";
+  // The HAL, the scene's data, and the bench's own code (its driver and its per-pass hooks
+  // live in an anonymous namespace; the pipeline's headers have none).
+  if (name.find("spanlight::hal") != std::string::npos || name.find("baked::") != std::string::npos ||
+      name.find("(anonymous namespace)") != std::string::npos || name.find("bench::") != std::string::npos)
+    return "";
+  if (std::regex_search(name, m, features)) {
+    std::vector<std::string> fields;
+    std::stringstream list(m[1].str());
+    for (std::string f; std::getline(list, f, ',');) fields.push_back(f);
+    if (fields.size() > table_bits_field) {  // trailing zero fields are left out of the name
+      table_bits = field_value(fields[table_bits_field]);
+      newton = fields.size() > newton_field ? field_value(fields[newton_field]) : 0;
+      return "instantiation";
+    }
   }
   if (std::regex_search(name, m, table)) {
     table_bits = std::stoi(m[1]);
     return "table";
   }
-  if (name.find("spanlight::hal") != std::string::npos || name.find("baked::") != std::string::npos ||
-      name.find("bench::") != std::string::npos)
-    return "";
   if (name.find("spanlight::") != std::string::npos || name.find("fixedpoint::") != std::string::npos) return "shared";
   static const std::regex helper(R"(^__(aeabi_(l|ul|ui|i)[a-z]*|u?divmoddi4|u?divdi3|u?moddi3|(ash|lsh)[lr]di3|muldi3|clz[sd]i2|ctzdi2))");
   if (std::regex_search(name, helper)) return "shared";
   return "";
 }
 
-std::optional<std::size_t> PipelineFlash::for_config(int table_bits, int n) const {
-  const auto it = instantiation.find({table_bits, n});
+std::optional<std::size_t> PipelineFlash::for_knobs(const Knobs& knobs) const {
+  const auto it = instantiation.find({knobs.table_bits, knobs.newton});
   if (it == instantiation.end()) return std::nullopt;
   // The span table, and the vertex divide's table unless it is the same one.
   auto table_size = [&](int bits) {
     const auto t = table.find(bits);
     return t == table.end() ? std::size_t{0} : t->second;
   };
-  const std::size_t tables = table_size(table_bits) + (table_bits == vertex_table_bits ? 0 : table_size(vertex_table_bits));
+  const std::size_t tables = table_size(knobs.table_bits) +
+                             (knobs.table_bits == vertex_divide_table_bits ? 0 : table_size(vertex_divide_table_bits));
   return shared + it->second + tables;
 }
 
@@ -93,7 +88,7 @@ std::optional<PipelineFlash> pipeline_flash(const std::filesystem::path& elf, co
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return std::nullopt;
   PipelineFlash flash;
-  std::array<char, 8192> buffer{};
+  std::array<char, 16384> buffer{};
   bool any = false;
   while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr) {
     // "address size type name...": only symbols with a size, in flash (code or read-only data).

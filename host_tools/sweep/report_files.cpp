@@ -3,8 +3,10 @@
 #include "compare/compare.hpp"
 #include "float_model/float_model.hpp"
 #include "prepare/prepare.hpp"
+#include "prepare/render_fixed.hpp"
 #include "sweep/csv_io.hpp"
 #include "sweep/filter_override.hpp"
+#include "sweep/reference_in_format.hpp"
 #include "sweep/report_plots.hpp"
 #include "sweep/report_tables.hpp"
 
@@ -16,12 +18,14 @@ void write_png(io::OutputFolder& out, const std::string& file, int width, int he
 }
 
 // Re-renders a row's fixed and float frames (cheaper than keeping every frame of the sweep).
-Picture picture_of(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& r, std::size_t row, PixelFormat format) {
-  const SweepConfig& c = r.rows[row].config;
+// The float picture is shown in the row's format (reference_in_format.hpp), as it is compared.
+Picture picture_of(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& r, std::size_t row) {
+  const GridPoint& c = r.rows[row].point;
   const scene::Scene filtered = with_filter(scene, c.filter);
   const auto prepared = prepare::prepare_scene(filtered);
-  const prepare::FixedFrame fixed = prepare::render_fixed(*prepared, to_fixed_options(c, format));
-  const float_model::FloatFrame reference = float_model::render_float(filtered);
+  const prepare::FixedFrame fixed = prepare::render_fixed(*prepared, c.knobs);
+  float_model::FloatFrame reference = float_model::render_float(filtered);
+  reference.rgb = reference_in_format(reference.rgb, c.knobs.format);
   const std::string stem = "images/" + std::to_string(row);
   // One float picture per filter: every row with that filter has the same reference.
   Picture p{row, stem + "-fixed.png", std::string("images/float-") + to_string(c.filter) + ".png", stem + "-diff.png"};
@@ -35,8 +39,7 @@ Picture picture_of(io::OutputFolder& out, const scene::Scene& scene, const Sweep
 
 }  // namespace
 
-void write_report(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& r, PixelFormat format,
-                  std::size_t pictures) {
+void write_report(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& r, std::size_t pictures) {
   out.remove_earlier_files_under("images");  // pictures of an earlier sweep would be stale
   out.write("sweep.csv", to_csv(r));
   std::vector<CostAxis> measured;
@@ -48,7 +51,7 @@ void write_report(io::OutputFolder& out, const scene::Scene& scene, const SweepR
   std::vector<Picture> shown;
   const CostAxis pictured = measured.empty() ? CostAxis::host : measured.front();  // M7 when measured
   for (std::size_t row : rows_to_picture(r, pictured, pictures))
-    shown.push_back(picture_of(out, scene, r, row, format));
+    shown.push_back(picture_of(out, scene, r, row));
   out.write("report.html", html_report(r, shown));
   out.write("front.md", markdown_summary(r));
 }

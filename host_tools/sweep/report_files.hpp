@@ -18,7 +18,6 @@ namespace spanlight::sweep {
 // Writes them into `out` (io::OutputFolder: a new folder, or one holding only
 // what spanlight wrote; pictures of an earlier sweep there are removed first).
 // Throws io::OutputError naming the file that could not be written.
-void write_report(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& result, PixelFormat format,
-                  std::size_t pictures);
+void write_report(io::OutputFolder& out, const scene::Scene& scene, const SweepResult& result, std::size_t pictures);
 
 }  // namespace spanlight::sweep

@@ -61,11 +61,11 @@ std::string pareto_svg(const SweepResult& r, CostAxis a) {
     const std::optional<double> cost = cost_of(row, a);
     if (!cost) continue;
     char text[200];
-    std::snprintf(text, sizeof text, "%s: %.3g %s, RMS %.3f LSB, PSNR %.2f dB", label(row.config).c_str(), *cost / unit,
+    std::snprintf(text, sizeof text, "%s: %.3g %s, RMS %.3f LSB, PSNR %.2f dB", label(row.point).c_str(), *cost / unit,
                   instructions ? "M instructions" : "ms", row.rms_vs_scene_lsb, row.psnr_vs_scene_db);
     points.push_back({*cost / unit, row.rms_vs_scene_lsb, on_front(row, a) ? PointStyle::front : PointStyle::dominated, text});
     if (row.is_default)
-      points.push_back({*cost / unit, row.rms_vs_scene_lsb, PointStyle::highlight, "default (" + label(row.config) + ")"});
+      points.push_back({*cost / unit, row.rms_vs_scene_lsb, PointStyle::highlight, "default (" + label(row.point) + ")"});
   }
   PlotSpec spec;
   spec.title = r.scene_name + ": cost on " + axis_name(a) + " against error (Pareto front in red)";
@@ -83,7 +83,7 @@ std::string default_place(const SweepResult& r, CostAxis a) {
   if (!def_cost) return "The default configuration has no cost on this axis.";
   char text[400];
   if (on_front(def, a)) {
-    std::snprintf(text, sizeof text, "The default (%s) is on the front.", label(def.config).c_str());
+    std::snprintf(text, sizeof text, "The default (%s) is on the front.", label(def.point).c_str());
     return text;
   }
   // The cheapest front point at least as accurate as the default.
@@ -93,7 +93,7 @@ std::string default_place(const SweepResult& r, CostAxis a) {
       const double saving = 100.0 * (1.0 - *cost_of(row, a) / *def_cost);
       std::snprintf(text, sizeof text,
                     "The default (%s) is off the front: %s is at least as accurate (RMS %.3f vs %.3f LSB) and %.1f%% cheaper.",
-                    label(def.config).c_str(), label(row.config).c_str(), row.rms_vs_scene_lsb, def.rms_vs_scene_lsb, saving);
+                    label(def.point).c_str(), label(row.point).c_str(), row.rms_vs_scene_lsb, def.rms_vs_scene_lsb, saving);
       return text;
     }
   }

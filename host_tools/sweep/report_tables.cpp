@@ -30,7 +30,7 @@ std::vector<std::string> header() {
 }
 
 std::vector<std::string> cells(const SweepResult& r, const SweepRow& row) {
-  std::string name = label(row.config);
+  std::string name = label(row.point);
   if (row.is_default) name += " (default)";
   return {name,
           instructions(row.m7),
@@ -165,7 +165,7 @@ std::string html_report(const SweepResult& r, const std::vector<Picture>& pictur
          "black 0, blue 1 LSB, green ~3, yellow ~10, red 32 and more.</p>\n";
     for (const Picture& p : pictures) {
       const SweepRow& row = r.rows[p.row];
-      h << "<h3>" << xml_escape(label(row.config)) << (row.is_default ? " (default)" : "") << ": PSNR "
+      h << "<h3>" << xml_escape(label(row.point)) << (row.is_default ? " (default)" : "") << ": PSNR "
         << psnr(row.psnr_db) << " dB, max " << fmt("%.0f", row.max_lsb) << " LSB, M7 " << instructions(row.m7)
         << "</h3>\n";
       for (const auto& [file, caption] : {std::pair{p.fixed_png, "fixed"}, std::pair{p.float_png, "float"}, std::pair{p.diff_png, "difference"}})

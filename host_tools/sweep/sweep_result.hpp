@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "sweep/sweep_config.hpp"
+#include "sweep/grid.hpp"
 
 namespace spanlight::sweep {
 
@@ -17,8 +17,9 @@ struct TargetCost {
 };
 
 struct SweepRow {
-  SweepConfig config;
-  // Accuracy against the float model, 8-bit levels (compare.hpp definitions).
+  GridPoint point;
+  // Accuracy against the float model, 8-bit levels (compare.hpp definitions); an RGB565
+  // frame against the float picture rounded to RGB565 (reference_in_format.hpp).
   double psnr_db = 0.0;  // +inf when identical
   double rms_lsb = 0.0;  // 255 * 10^(-psnr/20): the error axis of the Pareto front
   double max_lsb = 0.0, mean_lsb = 0.0, pct_over_2 = 0.0, pct_over_8 = 0.0;
@@ -43,7 +44,7 @@ struct SweepRow {
   double texcoord_err_max() const { return uv_err_max > st_err_max ? uv_err_max : st_err_max; }
 };
 
-// A per-pass instruction count of the default configuration on one CPU.
+// A per-pass instruction count of the default knobs on one CPU.
 struct PassCost {
   std::string cpu;
   std::vector<std::string> names;
@@ -55,7 +56,7 @@ struct SweepResult {
   int width = 0, height = 0;
   std::size_t covered_pixels = 0;  // pixels the float model covers in the eye view
   std::vector<SweepRow> rows;
-  std::vector<PassCost> passes;    // the default configuration, pass by pass
+  std::vector<PassCost> passes;    // the default knobs, pass by pass
   std::vector<std::string> notes;  // what was not measured and why, what was assumed
   double seconds = 0.0;            // wall time of the sweep
 };

@@ -11,11 +11,13 @@
 #include "compare/compare.hpp"
 #include "float_model/float_model.hpp"
 #include "prepare/prepare.hpp"
+#include "prepare/render_fixed.hpp"
 #include "sweep/coordinate_map.hpp"
 #include "sweep/filter_override.hpp"
 #include "sweep/memory_cost.hpp"
 #include "sweep/pareto.hpp"
 #include "sweep/qemu_bench.hpp"
+#include "sweep/reference_in_format.hpp"
 
 namespace spanlight::sweep {
 namespace {
@@ -33,9 +35,9 @@ double fastest_ms(int repeats, Fn&& fn) {
   return best;
 }
 
-// Coordinates do not depend on the filter or on fused: one probe per remaining knob set.
+// Coordinates do not depend on the filter, the format or the passes: one probe per remaining knob set.
 using ProbeKey = std::tuple<int, int, int, int, int>;
-ProbeKey probe_key(const SweepConfig& c) { return {c.span, c.tolerance_log2, c.table_bits, c.newton, c.depth_bits}; }
+ProbeKey probe_key(const Knobs& k) { return {k.span_log2, k.tolerance_log2, k.table_bits, k.newton, k.depth_bits}; }
 
 double rms_from_psnr(double psnr_db) { return std::isinf(psnr_db) ? 0.0 : 255.0 * std::pow(10.0, -psnr_db / 20.0); }
 
@@ -51,27 +53,30 @@ void measure_on_host(const scene::Scene& scene, const SweepOptions& o, SweepResu
   std::map<ProbeKey, CoordinateError> probes;
   const float_model::FloatFrame authored = float_model::render_float(scene);
   progress.phase("host: accuracy and time", result.rows.size());
+  const PixelFormat format = grid_format(o.grid);
+  const std::vector<std::uint8_t> authored_rgb = reference_in_format(authored.rgb, format);
   FilterChoice prepared_for = FilterChoice::scene;
   std::unique_ptr<prepare::PreparedStorage> prepared;
-  float_model::FloatFrame reference_frame;
+  std::vector<std::uint8_t> reference_rgb;
   double float_ms = 0.0;
   for (SweepRow& row : result.rows) {
-    const SweepConfig& c = row.config;
+    const GridPoint& c = row.point;
     if (!prepared || c.filter != prepared_for) {  // rows are grouped by filter (expand)
       const scene::Scene filtered = with_filter(scene, c.filter);
       prepared = prepare::prepare_scene(filtered);
       prepared_for = c.filter;
+      float_model::FloatFrame reference_frame;
       float_ms = fastest_ms(o.host_repeats, [&] { reference_frame = float_model::render_float(filtered); });
+      reference_rgb = reference_in_format(reference_frame.rgb, format);
     }
-    const prepare::FixedOptions options = to_fixed_options(c, o.format);
     prepare::FixedFrame frame;
-    row.host_ms = fastest_ms(o.host_repeats, [&] { frame = prepare::render_fixed(*prepared, options); });
+    row.host_ms = fastest_ms(o.host_repeats, [&] { frame = prepare::render_fixed(*prepared, c.knobs); });
     row.float_ms = float_ms;
     hashes[label(c)] = fnv1a(frame.raw);
 
     const compare::CompareResult diff = compare::compare_images(
         compare::Rgb8View{frame.width, frame.height, frame.rgb},
-        compare::Rgb8View{reference_frame.width, reference_frame.height, reference_frame.rgb});
+        compare::Rgb8View{frame.width, frame.height, reference_rgb});
     row.psnr_db = diff.psnr_db;
     row.rms_lsb = rms_from_psnr(diff.psnr_db);
     row.max_lsb = diff.max_abs_lsb;
@@ -81,14 +86,14 @@ void measure_on_host(const scene::Scene& scene, const SweepOptions& o, SweepResu
     const compare::CompareResult vs_scene =
         c.filter == FilterChoice::scene ? diff
                                         : compare::compare_images(compare::Rgb8View{frame.width, frame.height, frame.rgb},
-                                                                  compare::Rgb8View{authored.width, authored.height, authored.rgb});
+                                                                  compare::Rgb8View{authored.width, authored.height, authored_rgb});
     row.psnr_vs_scene_db = vs_scene.psnr_db;
     row.rms_vs_scene_lsb = rms_from_psnr(vs_scene.psnr_db);
     row.max_vs_scene_lsb = vs_scene.max_abs_lsb;
 
-    auto probe = probes.find(probe_key(c));
+    auto probe = probes.find(probe_key(c.knobs));
     if (probe == probes.end())
-      probe = probes.emplace(probe_key(c), compare_coordinates(fixed_coordinates(*prepared, options), reference, textured)).first;
+      probe = probes.emplace(probe_key(c.knobs), compare_coordinates(fixed_coordinates(*prepared, c.knobs), reference, textured)).first;
     const CoordinateError& e = probe->second;
     row.uv_err_max = e.uv_max;
     row.uv_err_mean = e.uv_mean;
@@ -96,8 +101,8 @@ void measure_on_host(const scene::Scene& scene, const SweepOptions& o, SweepResu
     row.st_err_mean = e.st_mean;
     row.visibility_mismatches = e.object_mismatches;
 
-    row.table_bytes = table_bytes(c.table_bits);
-    row.buffer_bytes = buffer_bytes(prepared->scene, o.format, c);
+    row.table_bytes = table_bytes(c.knobs.table_bits);
+    row.buffer_bytes = buffer_bytes(prepared->scene, c.knobs);
     char detail[160];
     std::snprintf(detail, sizeof detail, "%s: %.2f dB, max %.0f LSB, texels %.3f", label(c).c_str(), row.psnr_db,
                   row.max_lsb, row.texcoord_err_max());
@@ -110,21 +115,21 @@ void measure_on_host(const scene::Scene& scene, const SweepOptions& o, SweepResu
 
 struct QemuTask {
   std::string cpu;
-  SweepConfig config;
+  GridPoint point;
   std::filesystem::path elf;
   BenchRun run;
 };
 
-void run_tasks(std::vector<QemuTask>& tasks, const QemuSetup& setup, int jobs, Progress& progress) {
+void run_tasks(std::vector<QemuTask>& tasks, const MeasureSetup& setup, int jobs, Progress& progress) {
   std::atomic<std::size_t> next{0};
   std::mutex report;
   auto worker = [&] {
     for (std::size_t i = next++; i < tasks.size(); i = next++) {
-      tasks[i].run = run_bench(setup, tasks[i].cpu, tasks[i].elf, tasks[i].config);
+      tasks[i].run = run_bench(setup, tasks[i].cpu, tasks[i].elf, tasks[i].point);
       const std::lock_guard<std::mutex> lock(report);
       const std::string count = tasks[i].run.ok ? std::to_string(tasks[i].run.instructions) + " instructions"
                                                 : "failed: " + tasks[i].run.error;
-      progress.step(tasks[i].cpu + " " + label(tasks[i].config) + ": " + count);
+      progress.step(tasks[i].cpu + " " + label(tasks[i].point) + ": " + count);
     }
   };
   std::vector<std::thread> threads;
@@ -142,7 +147,8 @@ void measure_on_qemu(const scene::Scene& scene, const SweepOptions& o, SweepResu
     result.notes.push_back("Target cost not measured: --qemu-grid none.");
     return;
   }
-  const QemuSetup setup = find_qemu(o.firmware_dir, o.runner);
+  const MeasureSetup setup =
+      find_measure_setup(o.firmware_dir / "tools" / "qemu_icount" / "libspanlight_icount.so", o.measure_script);
   std::vector<QemuTask> tasks;
   for (const std::string& cpu : o.cpus) {
     if (!setup.unavailable.empty()) {
@@ -150,7 +156,7 @@ void measure_on_qemu(const scene::Scene& scene, const SweepOptions& o, SweepResu
       result.notes.push_back(cpu + " cost n/a: " + setup.unavailable + ".");
       continue;
     }
-    const std::filesystem::path elf = bench_elf(setup, cpu, scene.name);
+    const std::filesystem::path elf = bench_elf(o.firmware_dir, cpu, scene.name);
     std::error_code ec;
     if (!std::filesystem::exists(elf, ec)) {
       mark_all(cpu, elf.filename().string() + " not built");
@@ -158,15 +164,15 @@ void measure_on_qemu(const scene::Scene& scene, const SweepOptions& o, SweepResu
                              "firmware/apps/render_baked/scenes.cmake, and was firmware-" + cpu + " built?).");
       continue;
     }
-    std::vector<SweepConfig> unique;
+    std::vector<GridPoint> unique;
     for (const SweepRow& row : result.rows) {
-      const SweepConfig rep = o.qemu == QemuGrid::full ? row.config : cost_representative(row.config, o.grid);
+      const GridPoint rep = o.qemu == QemuGrid::full ? row.point : cost_representative(row.point, o.grid);
       if (std::find(unique.begin(), unique.end(), rep) == unique.end()) unique.push_back(rep);
     }
-    for (const SweepConfig& c : unique) tasks.push_back({cpu, c, elf, {}});
+    for (const GridPoint& c : unique) tasks.push_back({cpu, c, elf, {}});
     if (const auto flash = pipeline_flash(elf)) {
       for (SweepRow& row : result.rows)
-        (cpu == "cortex-m7" ? row.flash_m7 : row.flash_m0plus) = flash->for_config(row.config.table_bits, row.config.newton);
+        (cpu == "cortex-m7" ? row.flash_m7 : row.flash_m0plus) = flash->for_knobs(row.point.knobs);
     }
   }
   if (tasks.empty()) return;
@@ -178,8 +184,8 @@ void measure_on_qemu(const scene::Scene& scene, const SweepOptions& o, SweepResu
   for (SweepRow& row : result.rows) {
     bool any_run = false, all_same = true;  // hash_checked: every run behind this row's counts matched the host
     for (const std::string& cpu : o.cpus) {
-      const SweepConfig rep = o.qemu == QemuGrid::full ? row.config : cost_representative(row.config, o.grid);
-      const auto task = std::find_if(tasks.begin(), tasks.end(), [&](const QemuTask& t) { return t.cpu == cpu && t.config == rep; });
+      const GridPoint rep = o.qemu == QemuGrid::full ? row.point : cost_representative(row.point, o.grid);
+      const auto task = std::find_if(tasks.begin(), tasks.end(), [&](const QemuTask& t) { return t.cpu == cpu && t.point == rep; });
       if (task == tasks.end()) continue;
       TargetCost& cost = cpu == "cortex-m7" ? row.m7 : row.m0plus;
       if (!task->run.ok) {
@@ -187,18 +193,18 @@ void measure_on_qemu(const scene::Scene& scene, const SweepOptions& o, SweepResu
         ++failed;
         continue;
       }
-      if (task->run.format != prepare::to_string(o.format)) {
+      if (task->run.format != prepare::to_string(grid_format(o.grid))) {
         cost.source = "n/a: the bench is baked as " + task->run.format;
         ++failed;
         continue;
       }
       const auto hash = hashes.find(label(rep));
       const bool same_frame = hash != hashes.end() && hash->second == task->run.hash;
-      if (!same_frame && rep == row.config) ++mismatched;
+      if (!same_frame && rep == row.point) ++mismatched;
       any_run = true;
       all_same = all_same && same_frame;
       cost.instructions = task->run.instructions;
-      cost.source = rep == row.config ? "measured" : "as " + label(rep);
+      cost.source = rep == row.point ? "measured" : "as " + label(rep);
     }
     row.hash_checked = any_run && all_same;
   }
@@ -206,15 +212,16 @@ void measure_on_qemu(const scene::Scene& scene, const SweepOptions& o, SweepResu
   if (mismatched) result.notes.push_back(std::to_string(mismatched) + " QEMU run(s) rendered a frame whose hash differs from the host render's: the bench and the host disagree.");
   else result.notes.push_back("Every QEMU frame hash equals the host render's hash of the same configuration.");
   if (o.qemu == QemuGrid::cost)
-    result.notes.push_back("QEMU ran the cost-relevant grid: table bits 8 and depth bits 24 only. Other table sizes and "
+    result.notes.push_back("QEMU ran the cost-relevant grid: the default table bits and depth bits only. Other table sizes and "
                            "depth bits run the same instructions with other constants and reuse those counts "
                            "(source \"as ...\"); they differ only where the values change a span's subdivision or a "
                            "depth test. --qemu-grid full measures every configuration.");
 
-  if (!o.passes) return;
-  const SweepConfig def = default_config();
+  if (!o.per_pass) return;
+  GridPoint def;
+  def.knobs.format = grid_format(o.grid);
   for (const std::string& cpu : o.cpus) {
-    const std::filesystem::path elf = bench_elf(setup, cpu, scene.name);
+    const std::filesystem::path elf = bench_elf(o.firmware_dir, cpu, scene.name);
     std::error_code ec;
     if (!setup.unavailable.empty() || !std::filesystem::exists(elf, ec)) continue;
     const BenchRun run = run_bench(setup, cpu, elf, def, true);
@@ -228,12 +235,19 @@ void measure_on_qemu(const scene::Scene& scene, const SweepOptions& o, SweepResu
 
 }  // namespace
 
-SweepConfig cost_representative(const SweepConfig& c, const GridSpec& grid) {
-  SweepConfig rep = c;
-  const auto has = [](const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); };
-  rep.table_bits = has(grid.table_bits, 8) ? 8 : grid.table_bits.front();
-  rep.depth_bits = has(grid.depth_bits, 24) ? 24 : grid.depth_bits.front();
-  return rep;
+PixelFormat grid_format(const GridSpec& grid) {
+  const std::size_t format_index = [] {
+    for (std::size_t i = 0; i < std::size(knob_table); ++i)
+      if (std::string_view(knob_table[i].name) == "format") return i;
+    return std::size_t{0};
+  }();
+  const std::vector<std::string>& formats = grid.values.at(format_index);
+  if (formats.size() != 1)
+    throw std::invalid_argument("--format: expected one format (the scene's sweep_bench is built in the one it was baked with)");
+  Knobs k;
+  if (set_knob(k, "format", formats.front()) != KnobError::ok)
+    throw std::invalid_argument("--format: expected one of " + choice_list("format"));
+  return k.format;
 }
 
 void mark_fronts(SweepResult& result) {
@@ -247,7 +261,11 @@ void mark_fronts(SweepResult& result) {
   mark([](const SweepRow& r) { return r.m0plus.instructions ? static_cast<double>(*r.m0plus.instructions) : NAN; },
        [](SweepRow& r) { r.front_m0plus = true; });
   mark([](const SweepRow& r) { return r.host_ms; }, [](SweepRow& r) { r.front_host = true; });
-  for (SweepRow& row : result.rows) row.is_default = row.config == default_config();
+  for (SweepRow& row : result.rows) {
+    Knobs defaults;
+    defaults.format = row.point.knobs.format;
+    row.is_default = row.point == GridPoint{defaults, FilterChoice::scene};
+  }
 }
 
 SweepResult run_sweep(const scene::Scene& scene, const SweepOptions& options, Progress& progress) {
@@ -257,12 +275,13 @@ SweepResult run_sweep(const scene::Scene& scene, const SweepOptions& options, Pr
   SweepResult result;
   result.scene_name = scene.name;
   result.scene_file = scene.file.string();
-  result.format = prepare::to_string(o.format);
+  check_grid(o.grid);
+  result.format = prepare::to_string(grid_format(o.grid));
   result.width = scene.width;
   result.height = scene.height;
-  for (const SweepConfig& c : expand(o.grid)) {
+  for (const GridPoint& c : expand(o.grid)) {
     SweepRow row;
-    row.config = c;
+    row.point = c;
     result.rows.push_back(row);
   }
 

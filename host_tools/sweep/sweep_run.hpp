@@ -21,25 +21,25 @@ enum class QemuGrid {
 };
 
 struct SweepOptions {
-  GridSpec grid;              // grid.filters empty: the scene's distinct choices (filter_override.hpp)
-  PixelFormat format = PixelFormat::rgb888;  // must match the sweep_bench build (as baked)
+  GridSpec grid = default_grid();  // grid.filters empty: the scene's distinct choices (filter_override.hpp);
+                                   // one format (the sweep_bench is built as baked)
   int host_repeats = 3;       // host times are the fastest of this many renders
   QemuGrid qemu = QemuGrid::cost;
   std::vector<std::string> cpus{"cortex-m7", "cortex-m0plus"};
   int jobs = 2;               // QEMU runs side by side
-  bool passes = true;         // also count the default configuration pass by pass
+  bool per_pass = true;       // also count the default knobs pass by pass
   std::filesystem::path firmware_dir;  // the build tree with firmware-<cpu>/bin and the plugin
-  std::filesystem::path runner;        // run_on_qemu.sh
+  std::filesystem::path measure_script;  // measure_elf.sh
 };
+
+// The grid's one pixel format; throws std::invalid_argument when it lists several.
+PixelFormat grid_format(const GridSpec& grid);
 
 // Throws prepare::PrepareError when the scene does not fit the fixed formats.
 SweepResult run_sweep(const scene::Scene& scene, const SweepOptions& options, Progress& progress);
 
 // Marks the Pareto fronts (M7, M0+, host time vs RMS error against the scene as
-// authored) and the default configuration.
+// authored) and the default knobs (of the grid's format).
 void mark_fronts(SweepResult& result);
-
-// The configuration whose instruction count stands for `config` under QemuGrid::cost.
-SweepConfig cost_representative(const SweepConfig& config, const GridSpec& grid);
 
 }  // namespace spanlight::sweep

@@ -139,24 +139,25 @@ bake_folder_rules)
   ;;
 sweep_folder_rules)
   out="$scratch/sweep"
-  small_grid=(--spans 16 --table-bits 8 --newton 1 --depth-bits 24 --modes multipass --filters scene
-              --qemu-grid none --repeats 1 --no-passes --quiet)
+  small_grid=(--table-bits 8 --newton 1 --depth-bits 24 --passes fused --qemu-grid none --repeats 1 --no-per-pass --quiet)
   mkdir "$out"
   printf 'mine\n' >"$out/notes.txt"
-  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}"
+  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --span 64 --filters scene
   expect_status 2
   expect_stderr_has "got 1 other file(s): notes.txt"
   rm "$out/notes.txt"
-  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --spans 4,16 --pictures 2
+  # Rows: scene/span 1, scene/span 64 (the default, always pictured), nearest/1, nearest/64.
+  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --span 1,64 --filters scene,nearest --pictures 2
   expect_status 0
-  [[ "$(find "$out/images" -name '*-fixed.png' | wc -l)" == 2 ]] || fail "expected 2 pictures"
-  # Again with one picture: the earlier pictures go, a file of the user's in images/ stays (--force).
+  [[ -f "$out/images/1-fixed.png" ]] || fail "the default row's picture is missing"
+  # Again with one row: the earlier pictures go, a file of the user's in images/ stays (--force).
   printf 'mine\n' >"$out/images/keep.txt"
-  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --pictures 1
+  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --span 64 --filters scene --pictures 1
   expect_status 2
-  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --pictures 1 --force
+  run_spanlight sweep "$work/wide_uv.json" --out "$out" "${small_grid[@]}" --span 64 --filters scene --pictures 1 --force
   expect_status 0
-  [[ "$(find "$out/images" -name '*-fixed.png' | wc -l)" == 1 ]] || fail "the earlier pictures were not removed"
+  [[ "$(find "$out/images" -name '*-fixed.png' | wc -l)" == 1 && -f "$out/images/0-fixed.png" ]] ||
+    fail "the earlier pictures were not removed"
   [[ -f "$out/images/keep.txt" ]] || fail "the user's file in images/ was removed"
   ;;
 render_eight_at_once)

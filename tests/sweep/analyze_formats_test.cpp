@@ -85,9 +85,9 @@ TEST_CASE("surfaces 5e-6 apart in depth need 24 bits, and 16 bits do confuse the
   const auto prepared = prepare::prepare_scene(s);
   const sweep::CoordinateMap reference = sweep::float_coordinates(s);
   auto mismatches = [&](int bits) {
-    prepare::FixedOptions options;
-    options.precision.depth_bits = static_cast<std::uint8_t>(bits);
-    const sweep::CoordinateMap fixed = sweep::fixed_coordinates(*prepared, options);
+    Knobs knobs;
+    knobs.depth_bits = static_cast<std::uint8_t>(bits);
+    const sweep::CoordinateMap fixed = sweep::fixed_coordinates(*prepared, knobs);
     std::size_t n = 0;
     for (std::size_t p = 0; p < reference.pixels(); ++p) n += fixed.object[p] != reference.object[p];
     return n;

@@ -18,9 +18,9 @@ namespace {
 sweep::SweepRow row(int span, int depth_bits, double psnr, double max_lsb, std::uint64_t m7,
                     sweep::FilterChoice filter = sweep::FilterChoice::scene) {
   sweep::SweepRow r;
-  r.config.span = span;
-  r.config.depth_bits = depth_bits;
-  r.config.filter = filter;
+  REQUIRE(set_knob(r.point.knobs, "span", std::to_string(span)) == KnobError::ok);
+  REQUIRE(set_knob(r.point.knobs, "depth-bits", std::to_string(depth_bits)) == KnobError::ok);
+  r.point.filter = filter;
   r.psnr_db = psnr;
   r.rms_lsb = 255.0 * std::pow(10.0, -psnr / 20.0);
   r.max_lsb = max_lsb;
@@ -29,7 +29,7 @@ sweep::SweepRow row(int span, int depth_bits, double psnr, double max_lsb, std::
   r.max_vs_scene_lsb = max_lsb;
   r.m7.instructions = m7;
   r.m7.source = "measured";
-  r.is_default = r.config == sweep::default_config();
+  r.is_default = r.point == sweep::GridPoint{};
   return r;
 }
 
@@ -38,7 +38,7 @@ sweep::SweepResult sample() {
   r.scene_name = "sample";
   r.format = "rgb888";
   r.covered_pixels = 1000;
-  r.rows = {row(1, 24, 50, 4, 90), row(4, 24, 46, 9, 60), row(16, 24, 42, 30, 50), row(32, 24, 38, 60, 45),
+  r.rows = {row(1, 24, 50, 4, 90), row(4, 24, 46, 9, 60), row(64, 24, 42, 30, 50), row(32, 24, 38, 60, 45),
             row(32, 16, 38, 60, 44), row(16, 16, 42, 30, 49), row(32, 24, 48, 5, 20, sweep::FilterChoice::nearest)};
   return r;
 }
@@ -84,21 +84,40 @@ TEST_CASE("a max-error target, the default target, and an impossible one", "[ana
 TEST_CASE("a knob config survives writing and reading - bad ones are refused with the field", "[analyze]") {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "spanlight_knob_config_test";
   std::filesystem::create_directories(dir);
-  analyze::KnobConfig config;
-  config.knobs = {8, 2, 10, 0, 16, true, sweep::FilterChoice::nearest};
-  config.format = PixelFormat::rgb565;
+  sweep::GridPoint config{Knobs{.span_log2 = 3, .tolerance_log2 = 2, .table_bits = 10, .newton = 0, .depth_bits = 16,
+                                .format = PixelFormat::rgb565_be, .passes = Passes::multipass},
+                          sweep::FilterChoice::nearest};
   {
     std::ofstream(dir / "good.json") << analyze::to_json(config, R"({"psnr_db": 40})");
   }
-  const analyze::KnobConfig back = analyze::read_knob_config(dir / "good.json");
-  CHECK(back.knobs == config.knobs);
-  CHECK(back.format == PixelFormat::rgb565);
+  CHECK(analyze::read_knob_config(dir / "good.json") == config);
 
-  {
-    std::ofstream(dir / "bad_span.json") << R"({"spanlight_knobs": 1, "span": 3, "tolerance": 3, "table_bits": 8,
-      "newton": 1, "depth_bits": 24, "format": "rgb888", "fused": false, "texture_filter": "scene"})";
-  }
-  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "bad_span.json"), Catch::Matchers::Contains("span: expected one of"));
+  // Every knob by its knob_table name, values as typed (numbers as JSON numbers or strings).
+  const std::string good = R"({"spanlight_knobs": 2, "span": "8", "tolerance": 2, "table-bits": 10, "newton": 0,
+      "depth-bits": 16, "format": "rgb565-be", "passes": "multipass", "texture_filter": "nearest"})";
+  auto refused = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+  };
+  refused("typed.json", good);
+  CHECK(analyze::read_knob_config(dir / "typed.json") == config);
+  auto replace = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  refused("bad_span.json", replace(R"("span": "8")", R"("span": 3)"));
+  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "bad_span.json"),
+                    Catch::Matchers::Contains("bad_span.json: span: expected one of 1, 2, 4, 8, 16, 32, 64, not \"3\""));
+  refused("bad_format.json", replace(R"("rgb565-be")", R"("rgb555")"));
+  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "bad_format.json"), Catch::Matchers::Contains("format: expected one of"));
+  refused("missing_passes.json", replace(R"("passes": "multipass",)", ""));
+  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "missing_passes.json"), Catch::Matchers::Contains("passes: expected one of fused, multipass (missing)"));
+  refused("negative.json", replace(R"("newton": 0)", R"("newton": -1)"));
+  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "negative.json"), Catch::Matchers::Contains("newton: expected one of"));
+  refused("bad_filter.json", replace(R"("nearest")", R"("trilinear")"));
+  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "bad_filter.json"), Catch::Matchers::Contains("texture_filter: expected one of"));
+  refused("version1.json", replace(R"("spanlight_knobs": 2)", R"("spanlight_knobs": 1)"));
+  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "version1.json"), Catch::Matchers::Contains("spanlight_knobs: expected 2"));
   {
     std::ofstream(dir / "not_json.json") << "{span";
   }
@@ -123,7 +142,7 @@ TEST_CASE("the sweep CSV reads back what was written", "[sweep]") {
   CHECK(back.scene_name == "sample");
   CHECK(back.covered_pixels == 1000);
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
-    CHECK(back.rows[i].config == r.rows[i].config);
+    CHECK(back.rows[i].point == r.rows[i].point);
     CHECK(back.rows[i].m7.instructions == r.rows[i].m7.instructions);
     CHECK(back.rows[i].front_m7 == r.rows[i].front_m7);
     CHECK(back.rows[i].is_default == r.rows[i].is_default);
@@ -132,4 +151,30 @@ TEST_CASE("the sweep CSV reads back what was written", "[sweep]") {
   CHECK_FALSE(back.rows[1].m0plus.instructions);
   CHECK(back.rows[1].m0plus.source == "n/a: not built");
   CHECK(back.rows[2].flash_m7 == std::optional<std::size_t>{12345});
+}
+
+TEST_CASE("a sweep CSV with a knob value set_knob refuses is refused with the line and the column", "[sweep]") {
+  const std::string text = sweep::to_csv(sample());
+  const std::filesystem::path file = std::filesystem::temp_directory_path() / "spanlight_sweep_csv_bad.csv";
+  auto refusal = [&](const std::string& from, const std::string& to) {
+    std::string bad = text;
+    const std::size_t line2 = bad.find('\n') + 1;
+    const std::size_t at = bad.find(from, line2);
+    REQUIRE(at != std::string::npos);
+    bad.replace(at, from.size(), to);
+    {
+      std::ofstream(file) << bad;
+    }
+    std::string message;
+    try {
+      (void)sweep::read_csv(file);
+    } catch (const std::runtime_error& e) {
+      message = e.what();
+    }
+    std::filesystem::remove(file);
+    return message;
+  };
+  CHECK_THAT(refusal(",fused,", ",fusd,"), Catch::Matchers::Contains("line 2: passes: expected one of fused, multipass"));
+  CHECK_THAT(refusal(",rgb888,", ",rgb999,"), Catch::Matchers::Contains("line 2: format: expected one of"));
+  CHECK_THAT(refusal(",scene,", ",linear,"), Catch::Matchers::Contains("line 2: texture filter"));
 }

@@ -36,14 +36,17 @@ expect_lines() {  # FILE N: the file has N lines
 
 # --- sweep: a small grid on a scene whose texture is bilinear -> filters scene and nearest
 out=$scratch/sweep
-run_spanlight sweep "$SCENES/wide_uv.json" --out "$out" --spans 4,16 --table-bits 8 --newton 0,1 --depth-bits 24 \
-  --qemu-grid none --repeats 1 --pictures 2
+run_spanlight sweep "$SCENES/wide_uv.json" --out "$out" --span 16,64 --table-bits 8 --newton 0,1 --depth-bits 24 \
+  --passes fused,multipass --qemu-grid none --repeats 1 --pictures 2
 expect_status 0
 expect_stdout_has "swept wide_uv: 16 configurations"
 expect_stdout_has "host: "
 for f in sweep.csv report.html front.md pareto_host.svg; do expect_file "$out/$f"; done
 expect_lines "$out/sweep.csv" 17
-grep -q "^wide_uv,rgb888,[0-9]*,span16 tb8 n1 z24 multipass scene," "$out/sweep.csv" || fail "the default row is missing"
+head -n 1 "$out/sweep.csv" | grep -q ",label,span,tolerance,table-bits,newton,depth-bits,passes,filter," ||
+  fail "the CSV's knob columns are not the knobs' names"
+grep -q "^wide_uv,rgb888,[0-9]*,span=64 tolerance=5 table-bits=8 newton=1 depth-bits=24 passes=fused filter=scene,64,5,8,1,24,fused,scene," \
+  "$out/sweep.csv" || fail "the default row is missing"
 grep -q "n/a: QEMU runs switched off" "$out/sweep.csv" || fail "target cost should be n/a without QEMU"
 ls "$out"/images/*-fixed.png >/dev/null 2>&1 || fail "no pictures written"
 grep -q "<svg" "$out/pareto_host.svg" || fail "the plot is not SVG"
@@ -53,8 +56,15 @@ grep -q "Pareto front on host" "$out/front.md" || fail "front.md has no front ta
 # --- sweep: bad input exits 2
 run_spanlight sweep "$scratch/missing.json" --out "$scratch/x"
 expect_status 2
-run_spanlight sweep "$SCENES/wide_uv.json" --out "$scratch/x" --spans 3
+run_spanlight sweep "$SCENES/wide_uv.json" --out "$scratch/x" --span 3
 expect_status 2
+expect_stderr_has "--span"
+run_spanlight sweep "$SCENES/wide_uv.json" --out "$scratch/x" --format rgb888,rgb565 --qemu-grid none
+expect_status 2
+expect_stderr_has "--format: expected one format"
+expect_no_file "$scratch/x"
+run_spanlight sweep "$SCENES/wide_uv.json" --out "$scratch/x" --spans 4
+expect_status 2  # the old option names are gone
 run_spanlight sweep "$SCENES/wide_uv.json"
 expect_status 2
 run_spanlight sweep "$SCENES/far_positions.json" --out "$scratch/x" --qemu-grid none
@@ -90,15 +100,14 @@ span=$(sed -n 's/.*"span": \([0-9]*\).*/\1/p' "$scratch/knobs.json")
 run_spanlight bake "$SCENES/wide_uv.json" --out "$scratch/baked" --config "$scratch/knobs.json"
 expect_status 0
 expect_file "$scratch/baked/baked_config.hpp"
-log2=0
-while [ $((1 << log2)) -lt "$span" ]; do log2=$((log2 + 1)); done
-grep -q "precision{$log2, " "$scratch/baked/baked_config.hpp" || fail "the baked precision does not carry span $span"
+grep -q "takes them: --span $span " "$scratch/baked/baked_config.hpp" || fail "the baked knobs do not carry span $span"
 run_spanlight bake "$SCENES/wide_uv.json" --out "$scratch/baked2" --config "$scratch/knobs.json" --span 4
 expect_status 2
-echo '{"spanlight_knobs": 1, "span": 5}' >"$scratch/bad.json"
+echo '{"spanlight_knobs": 2, "span": 5}' >"$scratch/bad.json"
 run_spanlight bake "$SCENES/wide_uv.json" --out "$scratch/baked3" --config "$scratch/bad.json"
 expect_status 2
-expect_stderr_has "span: expected one of"
+expect_stderr_has "bad.json: span: expected one of 1, 2, 4, 8, 16, 32, 64"
+expect_no_file "$scratch/baked3"
 
 if ((failures > 0)); then
   echo "$failures expectation(s) failed"

@@ -1,28 +1,25 @@
-// What one sweep_bench run renders: the knobs from its command line.
+// What one sweep_bench run renders: the pipeline's knobs (parse_knobs, the one
+// knob vocabulary), the texture filter the sweep may force, and whether each
+// pass is measured as its own region.
 #pragma once
 
 #include <cstdint>
 
 #include "hal/hal.hpp"
-#include "spanlight/features.hpp"
+#include "spanlight/knobs.hpp"
+#include "spanlight/scene.hpp"
 
 namespace bench {
 
-enum class FilterChoice : std::uint8_t { scene, nearest, bilinear };
-
 struct Request {
-  int table_bits = 8;
-  int newton = 1;
-  spanlight::Precision precision{};
-  FilterChoice filter = FilterChoice::scene;
-  bool passes = false;  // measure each pass as its own region instead of the whole frame
+  spanlight::Knobs knobs{};  // parse_request changes only the knobs on the command line
+  bool force_filter = false;  // false: each texture's filter as baked
+  spanlight::Filter filter = spanlight::Filter::bilinear;
+  bool per_pass = false;  // one measured region per pass instead of the whole frame
 };
 
-// Parses "--table-bits B --newton N --span S --tolerance T --depth-bits D --fused 0|1
-// --filter scene|nearest|bilinear [--passes]" (any order, all optional). On a bad
-// argument returns false and points `error` at the offending word.
+// Parses "[knob words as `spanlight render` takes them] [--filter scene|nearest|bilinear] [--per-pass]"
+// (args[0] is the program). On a bad word returns false and points `error` at it.
 bool parse_request(spanlight::hal::Args args, Request& out, const char*& error);
-
-const char* to_string(FilterChoice filter);
 
 }  // namespace bench

@@ -23,6 +23,11 @@ struct ScreenVertex {
   int inv_w_exponent;
 };
 
+// The vertex divide's reciprocal: its table's index bits and Newton steps (the
+// sweep's memory figures count this table; named here so no one has to guess it).
+inline constexpr int vertex_divide_table_bits = 8;
+inline constexpr int vertex_divide_newton = 2;
+
 // (a + w) / w in Q.32 for |a| <= G*w: both are shifted by k so that w fits 28
 // bits; the quotient then keeps 28 significant bits, ample for 2^20 subpixels.
 struct VertexDivider {
@@ -32,7 +37,7 @@ struct VertexDivider {
     if (w < 1) w = 1;  // w >= 0 after near and far clipping; w == 0 only at the eye itself
     const int excess = fixedpoint::bit_length(static_cast<std::uint64_t>(w)) - 28;
     k = excess > 0 ? excess : 0;
-    rcp = fixedpoint::reciprocal<8, 2>(static_cast<std::uint32_t>(w >> k));
+    rcp = fixedpoint::reciprocal<vertex_divide_table_bits, vertex_divide_newton>(static_cast<std::uint32_t>(w >> k));
   }
   // (numerator / w) * 2^32, numerator >> k < 2^31 when |numerator| <= 7*w.
   constexpr std::int64_t ratio_q32(std::int64_t numerator) const {

@@ -14,6 +14,8 @@ set(SPANLIGHT_FIRMWARE_BUILD_TYPE Release CACHE STRING "CMAKE_BUILD_TYPE of the 
 # side as jobs of the outer build, so the outer -j still bounds the load.
 set(SPANLIGHT_FIRMWARE_JOBS 1 CACHE STRING "Parallel jobs inside each firmware build tree")
 set(SPANLIGHT_FIRMWARE_CPUS cortex-m7 cortex-m4 cortex-m0plus)
+set(SPANLIGHT_SWEEP_BENCH_SCENES "spot_shadow" CACHE STRING
+    "Scenes to build sweep benches for (firmware/apps/sweep_bench), or all: docs/sweep/regenerate.sh needs all")
 
 set(SPANLIGHT_FIRMWARE_ENABLED OFF)
 if(NOT SPANLIGHT_APPS)
@@ -59,6 +61,7 @@ foreach(cpu IN LISTS SPANLIGHT_FIRMWARE_CPUS)
       -DCMAKE_BUILD_TYPE=${SPANLIGHT_FIRMWARE_BUILD_TYPE}
       -DSPANLIGHT_HOST_TOOLS_DIR=$<TARGET_FILE_DIR:spanlight>
       -DSPANLIGHT_QEMU_ICOUNT_PLUGIN=$<TARGET_FILE:spanlight_icount>
+      "-DSPANLIGHT_SWEEP_BENCH_SCENES=${SPANLIGHT_SWEEP_BENCH_SCENES}"
     BUILD_COMMAND ${CMAKE_COMMAND} --build <BINARY_DIR> --parallel ${SPANLIGHT_FIRMWARE_JOBS}
     # Always run the inner build: the outer build cannot see which sources the firmware uses.
     BUILD_ALWAYS ON

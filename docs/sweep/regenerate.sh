@@ -5,7 +5,8 @@
 # in QEMU through tools/qemu_icount/measure_elf.sh.
 #   docs/sweep/regenerate.sh [BUILD_DIR [OUT_DIR [SWEEP_OPTION...]]]
 #     BUILD_DIR  default build; needs bin/spanlight, the firmware trees (firmware-<cpu>/bin with
-#                the sweep_bench_<scene> ELFs) and the QEMU plugin built
+#                the sweep_bench_<scene> ELFs: configure with -DSPANLIGHT_SWEEP_BENCH_SCENES=all)
+#                and the QEMU plugin built
 #     OUT_DIR    default docs/sweep; another folder leaves the committed results alone
 #     SWEEP_OPTION...  passed to every sweep, e.g. a small grid: --span 16,64 --table-bits 8
 # Run from anywhere; scene paths in the output are relative to the source tree.

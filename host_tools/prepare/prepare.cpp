@@ -86,6 +86,25 @@ int uv_frac_bits_for(double largest_texel_coordinate) {
   return std::clamp(29 - integer_bits, 8, 16);
 }
 
+namespace {
+
+// A repeating image with a side of one texel, doubled along that side: the
+// sampler finds a texel as the top log2(size) bits of a 32-bit fraction, and
+// log2 1 = 0 would shift by 32. Both copies are the one row (or column), so
+// nearest and bilinear read the same values as from the original.
+scene::Image repeatable(const scene::Image& image) {
+  if (image.width > 1 && image.height > 1) return image;
+  scene::Image out;
+  out.width = image.width == 1 ? 2 : image.width;
+  out.height = image.height == 1 ? 2 : image.height;
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (const std::uint8_t c : image.texel(x % image.width, y % image.height)) out.rgb.push_back(c);
+  return out;
+}
+
+}  // namespace
+
 std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
   auto out = std::make_unique<PreparedStorage>();
   const std::size_t projector_count = s.projectors.size();
@@ -107,10 +126,10 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
     const Use use{index, wrap, object && t.filter == scene::Filter::trilinear};
     if (const auto found = baked.find(use); found != baked.end()) return found->second;
     PreparedTexture& storage = out->texture_storage.emplace_back();
-    if (use.mipmapped) {
+    if (use.mipmapped) {  // the mipmap sampler takes a side of one texel at any level
       for (const scene::Image& level : scene::mip_chain(t.image)) storage.framed.push_back(framed_texels(level, wrap));
     } else {
-      storage.framed.push_back(framed_texels(t.image, wrap));
+      storage.framed.push_back(framed_texels(wrap == Wrap::repeat ? repeatable(t.image) : t.image, wrap));
     }
     const auto id = static_cast<std::int16_t>(out->texture_storage.size() - 1);
     baked.emplace(use, id);
@@ -134,9 +153,12 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
     PreparedTexture& storage = out->texture_storage[i];
     const Use& use = order[i];
     const scene::Texture& t = s.textures[static_cast<std::size_t>(use.index)];
+    const bool doubled = use.wrap == Wrap::repeat && !use.mipmapped;  // as repeatable() bakes it
+    const int width0 = doubled ? std::max(2, t.image.width) : t.image.width;
+    const int height0 = doubled ? std::max(2, t.image.height) : t.image.height;
     for (std::size_t k = 0; k < storage.framed.size(); ++k) {
-      const auto w = static_cast<std::uint16_t>(std::max(1, t.image.width >> k));
-      const auto h = static_cast<std::uint16_t>(std::max(1, t.image.height >> k));
+      const auto w = static_cast<std::uint16_t>(std::max(1, width0 >> k));
+      const auto h = static_cast<std::uint16_t>(std::max(1, height0 >> k));
       const std::uint32_t stride = w + 2u * texture_frame;
       storage.levels.push_back(TextureLevel{storage.framed[k].data() + stride * texture_frame + texture_frame, w, h,
                                             static_cast<std::uint16_t>(stride)});
@@ -178,7 +200,7 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
 
     int frac = 8;
     if (o.texture >= 0) {
-      const scene::Image& img = s.textures[static_cast<std::size_t>(o.texture)].image;
+      const TextureLevel& img = out->textures[static_cast<std::size_t>(object_texture[i])].levels[0];  // as baked
       const std::vector<glm::dvec2> uvs = scene::vertex_uvs(s.camera, o);  // given, or from texgen
       double largest = 0.0;
       for (const glm::dvec2& uv : uvs)

@@ -173,7 +173,9 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   const std::uint32_t rcp = fixedpoint::reciprocal_normalised<8, 2>(static_cast<std::uint32_t>(area2) << (32 - area_log2));
   const int shift = 4 + area_log2;
   auto plane = [&](const SmallEdge& e) {
-    auto scaled = [&](std::int32_t x) { return static_cast<std::int32_t>(fixedpoint::mul_s32_u32(x, rcp) >> shift); };
+    auto scaled = [&](std::int32_t x) {  // rounded: within 2^-27 of x rcp / 2^shift
+      return static_cast<std::int32_t>((fixedpoint::mul_s32_u32(x, rcp) + (std::int64_t{1} << (shift - 1))) >> shift);
+    };
     return BarycentricPlane{scaled(e.row_value), scaled(e.slope), scaled(e.row_step)};
   };
   t.l1 = plane(t.edge[1]);

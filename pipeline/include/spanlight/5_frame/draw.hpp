@@ -141,7 +141,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     const TextureLevel& image = scene.textures[scene.projectors[j].texture].levels[0];
     projector_texels[j] = image.width > image.height ? image.width : image.height;
     // Q3.28 units per texel of the larger side: 2^28 / size, rounded down in log2.
-    projector_texel_bits[j] = static_cast<std::uint8_t>(proj_frac_bits - (32 - fixedpoint::clz32(projector_texels[j] - 1u)));
+    projector_texel_bits[j] = static_cast<std::uint8_t>(proj_frac_bits - fixedpoint::bit_length(projector_texels[j] - 1u));  // 1 texel: 0 bits
   }
   SpanControl control{knobs.span_log2, knobs.tolerance_log2, nullptr, 8, projector_texels, projector_texel_bits, z_limit};
   const int pc = scene.projector_count;

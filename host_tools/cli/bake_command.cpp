@@ -1,4 +1,4 @@
-// spanlight bake SCENE.json --out DIR [--depfile FILE] [knobs]: C++ sources for a firmware build.
+// spanlight bake SCENE.json --out DIR [--depfile FILE] [--animation A.json] [knobs]: C++ sources for a firmware build.
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -8,6 +8,7 @@
 #include "bake/bake.hpp"
 #include "bake/depfile.hpp"
 #include "cli/accuracy_warning.hpp"
+#include "cli/animation_load.hpp"
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"
 #include "cli/load.hpp"
@@ -22,6 +23,7 @@ struct BakeArgs {
   std::string scene;
   std::string out;
   std::string depfile;  // where to list the files the bake read, for the build that runs it
+  std::string animation;
   Knobs knobs;
   bool force = false;
 };
@@ -29,14 +31,22 @@ struct BakeArgs {
 int run_bake(const BakeArgs& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
-  io::OutputFolder out(a.out, "--out", a.force, inputs_of(*scene));  // checked before anything is prepared
+  io::RunInputs run_inputs = inputs_of(*scene);
+  if (!a.animation.empty()) run_inputs.add(std::filesystem::path(a.animation));
+  io::OutputFolder out(a.out, "--out", a.force, run_inputs);  // checked before anything is prepared
   warn_if_inaccurate(a.knobs);
   const auto prepared = prepare_or_report(*scene);
   if (!prepared) return exit_bad_input;
+  std::unique_ptr<prepare::PreparedAnimation> animation;
+  if (!a.animation.empty()) {
+    animation = prepare_animation_or_report(a.animation, *scene, *prepared);
+    if (!animation) return exit_bad_input;
+  }
   std::string depfile_text;  // made before anything is written: a bad name leaves no output
   const std::filesystem::path outputs[2] = {out.path() / bake::baked_scene_file, out.path() / bake::baked_config_file};
   if (!a.depfile.empty()) {
-    const std::vector<std::filesystem::path> inputs = scene::files_read(*scene);
+    std::vector<std::filesystem::path> inputs = scene::files_read(*scene);
+    if (animation) inputs.push_back(animation->source.file);
     const std::string refusal = bake::depfile_refusal(a.depfile, inputs, {outputs[0], outputs[1]});
     if (!refusal.empty()) {
       std::fprintf(stderr, "%s: --depfile: %s\n", a.depfile.c_str(), refusal.c_str());
@@ -49,13 +59,13 @@ int run_bake(const BakeArgs& a) {
       return exit_bad_input;
     }
   }
-  bake::write_baked_scene(*prepared, a.knobs, scene->name, out);
+  bake::write_baked_scene(*prepared, a.knobs, scene->name, out, animation.get());
   if (!a.depfile.empty()) {
     // Inside --out it is one of the bake's own files (listed in the folder's manifest, so the
     // next bake accepts the folder); elsewhere a file of its own.
     const std::filesystem::path inside = std::filesystem::path(a.depfile).lexically_normal().lexically_relative(out.path().lexically_normal());
     if (!inside.empty() && *inside.begin() != "..") out.write(inside, depfile_text);
-    else io::write_file_atomically(a.depfile, depfile_text, "--depfile", inputs_of(*scene));
+    else io::write_file_atomically(a.depfile, depfile_text, "--depfile", run_inputs);
   }
   const Features f = features_of(prepared->scene, a.knobs);
   std::printf("baked %s into %s: %d projector(s), shadows %s%s, filters%s%s, %s\n", scene->name.c_str(), a.out.c_str(),
@@ -74,6 +84,9 @@ Command add_bake_command(CLI::App& app) {
   cmd->add_flag("--force", args->force, "write into --out even when it holds other files (none is removed)");
   cmd->add_option("--depfile", args->depfile,
                   "also write FILE: a Makefile-syntax rule naming the scene and every file it read, for the build")
+      ->type_name("FILE");
+  cmd->add_option("--animation", args->animation,
+                  "also bake this animation (docs/animation-format.md) as baked::animation for scene_pose_at_frame")
       ->type_name("FILE");
   add_knob_options(*cmd, args->knobs);
   return [args] { return run_bake(*args); };

@@ -80,7 +80,9 @@ inline std::vector<std::uint8_t> render_in_bands(const spanlight::PreparedScene&
     const std::uint32_t row_bytes = scene.width * Color::per_pixel * sizeof(typename Color::Storage);
     std::vector<std::uint8_t> frame(std::size_t{row_bytes} * scene.height);
     BandCollector collect{{}, &frame, row_bytes};
-    if (render_frame<F>(scene, matrices, target, knobs, collect) != RenderStatus::ok) frame.clear();
+    // An empty result when the frame is refused or a band never arrives (the frame would stay zero).
+    const int expected_bands = static_cast<int>((scene.height + rows - 1) / rows);
+    if (render_frame<F>(scene, matrices, target, knobs, collect) != RenderStatus::ok || collect.bands != expected_bands) frame.clear();
     return frame;
   });
 }

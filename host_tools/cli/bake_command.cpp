@@ -31,6 +31,11 @@ struct BakeArgs {
 int run_bake(const BakeArgs& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
+  std::optional<scene::Animation> loaded;
+  if (!a.animation.empty()) {
+    loaded = load_animation_or_report(a.animation, *scene);
+    if (!loaded) return exit_bad_input;
+  }
   io::RunInputs run_inputs = inputs_of(*scene);
   if (!a.animation.empty()) run_inputs.add(std::filesystem::path(a.animation));
   io::OutputFolder out(a.out, "--out", a.force, run_inputs);  // checked before anything is prepared
@@ -38,8 +43,8 @@ int run_bake(const BakeArgs& a) {
   const auto prepared = prepare_or_report(*scene);
   if (!prepared) return exit_bad_input;
   std::unique_ptr<prepare::PreparedAnimation> animation;
-  if (!a.animation.empty()) {
-    animation = prepare_animation_or_report(a.animation, *scene, *prepared);
+  if (loaded) {
+    animation = prepare_animation_or_report(*loaded, *scene, *prepared);
     if (!animation) return exit_bad_input;
   }
   std::string depfile_text;  // made before anything is written: a bad name leaves no output

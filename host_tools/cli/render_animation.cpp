@@ -35,9 +35,11 @@ std::string psnr_text(double db) {
 int run_render_animation(const AnimationRender& a) {
   const std::optional<scene::Scene> scene = load_or_report(a.scene);
   if (!scene) return exit_bad_input;
+  const std::optional<scene::Animation> loaded = load_animation_or_report(a.animation, *scene);
+  if (!loaded) return exit_bad_input;
   const auto prepared = prepare_or_report(*scene);
   if (!prepared) return exit_bad_input;
-  const auto animation = prepare_animation_or_report(a.animation, *scene, *prepared);
+  const auto animation = prepare_animation_or_report(*loaded, *scene, *prepared);
   if (!animation) return exit_bad_input;
   io::RunInputs inputs = inputs_of(*scene);
   inputs.add(animation->source.file);

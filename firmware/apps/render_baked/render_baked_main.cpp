@@ -1,6 +1,11 @@
 // render_baked: renders the scene baked into baked_scene.cpp / baked_config.hpp
 // (`spanlight bake`) into static buffers, measures the frame, and writes it out
 // through the HAL as a PPM. The same source builds for Cortex-M and the host.
+//   render_<scene> [OUT.ppm [BAND_ROWS]]
+// BAND_ROWS > 0 draws the frame in bands of that many rows (the buffers hold the whole
+// frame either way), each band pushed to the sink as it is finished; the measured
+// regions hold only rendering (common/band_sink.hpp), so their sum compares with the
+// whole frame's single region.
 //
 // A firmware engineer's own app looks like this: declare the buffers the baked
 // configuration asks for, call render_frame, push the colour buffer to a display.
@@ -9,6 +14,7 @@
 #include <span>
 
 #include "baked_config.hpp"
+#include "band_sink.hpp"
 #include "hal/hal.hpp"
 #include "hal/log_line.hpp"
 
@@ -42,46 +48,55 @@ std::array<std::span<baked::Depth>, map_slots> shadow_maps() {
   return maps;
 }
 
-// Rows go out one at a time as RGB888, the way a display driver would take spans.
-bool write_frame(const char* path) {
-  hal::FrameSink sink;
-  if (!sink.open(path, {baked::width, baked::height})) return false;
-  for (std::uint16_t y = 0; y < baked::height; ++y) {
-    for (std::uint32_t x = 0; x < baked::width; ++x) {
-      const Colour c = Color::load(color.data() + (std::uint32_t{y} * baked::width + x) * Color::per_pixel);
-      line[x * 3] = static_cast<std::uint8_t>(red(c));
-      line[x * 3 + 1] = static_cast<std::uint8_t>(green(c));
-      line[x * 3 + 2] = static_cast<std::uint8_t>(blue(c));
-    }
-    if (!sink.flush_rect({0, y, baked::width, 1}, line, line.size())) return false;
+// A band-rows argument: digits only, at most the frame's height; 0 when absent.
+bool parse_band_rows(const char* text, std::uint16_t& rows) {
+  std::uint32_t n = 0;
+  for (const char* c = text; *c != 0; ++c) {
+    if (*c < '0' || *c > '9' || n > baked::height) return false;
+    n = n * 10 + static_cast<std::uint32_t>(*c - '0');
   }
-  return sink.close();
+  if (*text == 0 || n > baked::height) return false;
+  rows = static_cast<std::uint16_t>(n);
+  return true;
 }
 
 }  // namespace
 
 int spanlight::hal::app_main(Args args) {
   const char* out = args.size() > 1 ? args[1] : "frame.ppm";
+  std::uint16_t band_rows = 0;
+  if (args.size() > 2 && !parse_band_rows(args[2], band_rows)) {
+    log_line(LogLine() << "render_baked: band rows: expected an integer in 0.." << baked::height << ", got " << args[2]);
+    return 2;
+  }
   const auto maps = shadow_maps();
   const FrameTarget<baked::features.format, baked::Depth> target{color, depth, std::span(maps).first(baked::projector_count),
-                                                                 tie_mask, vertices};
+                                                                 tie_mask, vertices, band_rows};
+  hal::FrameSink sink;
+  if (!sink.open(out, {baked::width, baked::height})) {
+    log_line(LogLine() << "render_baked: cannot write " << out);
+    return 1;
+  }
   CostCounter cost;
+  apps::BandSink<baked::features.format> bands{{}, band_rows ? &sink : nullptr, line, baked::width, &cost};
   cost.begin();
-  const RenderStatus status = render_frame<baked::features>(baked::scene, baked::matrices, target, baked::knobs);
+  const RenderStatus status = render_frame<baked::features>(baked::scene, baked::matrices, target, baked::knobs, bands);
   cost.end();
   if (status != RenderStatus::ok) {
     log_line(LogLine() << "render_baked: render_frame refused the frame: " << describe(status));
     return 1;
   }
-  if (!write_frame(out)) {
+  const bool written = band_rows ? bands.ok : apps::write_rows<baked::features.format>(&sink, baked::width, 0, baked::height, color.data(), line);
+  if (!written || !sink.close()) {
     log_line(LogLine() << "render_baked: cannot write " << out);
     return 1;
   }
-  // Covered pixels: those with a surface's depth, for "instructions per covered pixel".
+  // Covered pixels: those with a surface's depth, for "instructions per covered pixel" (with
+  // bands, of the last band only).
   std::uint32_t covered = 0;
   for (const baked::Depth d : depth) covered += d != depth_clear(baked::knobs.depth_bits) ? 1u : 0u;
   log_line(LogLine() << "render_baked: " << baked::scene_name << " " << baked::width << "x" << baked::height
-                     << " in " << cost.elapsed() << " " << CostCounter::unit() << ", covered " << covered
+                     << " in " << cost.elapsed() << " " << CostCounter::unit() << ", band rows " << band_rows << ", covered " << covered
                      << " pixels, stack peak " << stack_peak_bytes() << " bytes -> " << out);
   return 0;
 }

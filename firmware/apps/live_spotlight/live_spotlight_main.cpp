@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <span>
 
+#include "app_args.hpp"
 #include "baked_config.hpp"
 #include "band_sink.hpp"
 #include "hal/hal.hpp"
@@ -39,18 +40,6 @@ std::array<Mat4Block, baked::object_count> clip_from_object;
 std::array<Mat4Block, baked::object_count * baked::projector_count> projector_from_object, light_clip_from_object;
 std::array<CameraPose, baked::projector_count> projector_poses;
 
-// Digits only, 1..frame_count; false otherwise.
-bool parse_step(const char* text, std::uint32_t& step) {
-  std::uint32_t n = 0;
-  for (const char* c = text; *c != 0; ++c) {
-    if (*c < '0' || *c > '9' || n > baked::frame_count) return false;
-    n = n * 10 + static_cast<std::uint32_t>(*c - '0');
-  }
-  if (n == 0 || n > baked::frame_count) return false;
-  step = n;
-  return true;
-}
-
 // OUT_PREFIX_NNNN.ppm into `path` (prefix at most 40 characters).
 bool frame_path(const char* prefix, std::uint32_t frame, std::span<char> path) {
   std::size_t n = 0;
@@ -70,7 +59,7 @@ int spanlight::hal::app_main(Args args) {
   const char* prefix = args.size() > 1 ? args[1] : "frame";
   const bool write = !(prefix[0] == '-' && prefix[1] == 0);
   std::uint32_t step = 1;
-  if (args.size() > 2 && !parse_step(args[2], step)) {
+  if (args.size() > 2 && !apps::parse_count(args[2], 1, baked::frame_count, step)) {
     log_line(LogLine() << "live_spotlight: step: expected an integer in 1.." << baked::frame_count << ", got " << args[2]);
     return 2;
   }

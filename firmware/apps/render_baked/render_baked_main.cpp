@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <span>
 
+#include "app_args.hpp"
 #include "baked_config.hpp"
 #include "band_sink.hpp"
 #include "hal/hal.hpp"
@@ -48,30 +49,18 @@ std::array<std::span<baked::Depth>, map_slots> shadow_maps() {
   return maps;
 }
 
-// A band-rows argument: digits only, at most the frame's height; 0 when absent.
-bool parse_band_rows(const char* text, std::uint16_t& rows) {
-  std::uint32_t n = 0;
-  for (const char* c = text; *c != 0; ++c) {
-    if (*c < '0' || *c > '9' || n > baked::height) return false;
-    n = n * 10 + static_cast<std::uint32_t>(*c - '0');
-  }
-  if (*text == 0 || n > baked::height) return false;
-  rows = static_cast<std::uint16_t>(n);
-  return true;
-}
-
 }  // namespace
 
 int spanlight::hal::app_main(Args args) {
   const char* out = args.size() > 1 ? args[1] : "frame.ppm";
-  std::uint16_t band_rows = 0;
-  if (args.size() > 2 && !parse_band_rows(args[2], band_rows)) {
+  std::uint32_t band_rows = 0;
+  if (args.size() > 2 && !apps::parse_count(args[2], 0, baked::height, band_rows)) {
     log_line(LogLine() << "render_baked: band rows: expected an integer in 0.." << baked::height << ", got " << args[2]);
     return 2;
   }
   const auto maps = shadow_maps();
   const FrameTarget<baked::features.format, baked::Depth> target{color, depth, std::span(maps).first(baked::projector_count),
-                                                                 tie_mask, vertices, band_rows};
+                                                                 tie_mask, vertices, static_cast<std::uint16_t>(band_rows)};
   hal::FrameSink sink;
   if (!sink.open(out, {baked::width, baked::height})) {
     log_line(LogLine() << "render_baked: cannot write " << out);

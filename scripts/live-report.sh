@@ -5,7 +5,8 @@
 #     and instructions per frame (exact QEMU counts of the pose, its matrices and the
 #     rendering; pushing bands to the sink is outside the measured regions), mean and max;
 #   - the working set: .data + .bss + the stack reserve, and the stack peak;
-#   - band cost: render_textured_room and render_slide_projector whole and in 16-row bands.
+#   - band cost: render_textured_room, render_slide_projector and render_live_spotlight (the
+#     demo scene at its own pose) whole and in 16-row bands.
 # Usage: scripts/live-report.sh [BUILD_DIR]   (after building the firmware trees and the host apps)
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
@@ -62,7 +63,7 @@ echo "the measured regions exclude pushing the bands out)."
 echo
 echo "| scene | core | whole frame | $bands-row bands | more |"
 echo "|---|---|---:|---:|---:|"
-for scene in textured_room slide_projector; do
+for scene in textured_room slide_projector live_spotlight; do
   for cpu in cortex-m7 cortex-m0plus; do
     elf=$build/firmware-$cpu/bin/render_$scene.elf
     dir=$work/$scene-$cpu

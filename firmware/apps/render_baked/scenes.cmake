@@ -7,7 +7,8 @@ set(SPANLIGHT_BAKED_SCENES
   "three_projectors|scenes/three_projectors.json|"
   "horizon|scenes/horizon.json|"
   "textured_room|scenes/textured_room.json|--format rgb565 --depth-bits 16"
-  "textured_room_nearest|scenes/textured_room_nearest.json|--format rgb565 --depth-bits 16")
+  "textured_room_nearest|scenes/textured_room_nearest.json|--format rgb565 --depth-bits 16"
+  "live_spotlight|scenes/live_spotlight.json|--format rgb565 --depth-bits 16")
 
 # spanlight_baked_scene_fields(<entry> <name_var> <file_var> <options_var>)
 function(spanlight_baked_scene_fields entry name_var file_var options_var)

@@ -42,7 +42,7 @@ add_subdirectory(${PROJECT_SOURCE_DIR}/tools/qemu_icount ${PROJECT_BINARY_DIR}/t
 
 foreach(cpu IN LISTS SPANLIGHT_FIRMWARE_CPUS)
   set(byproducts)
-  set(apps selftest icount_calibration fault_check pose_bench)
+  set(apps selftest icount_calibration fault_check pose_bench live_spotlight)
   foreach(entry IN LISTS SPANLIGHT_BAKED_SCENES)
     spanlight_baked_scene_fields("${entry}" name file options)
     list(APPEND apps render_${name})

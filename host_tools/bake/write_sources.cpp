@@ -69,7 +69,7 @@ std::string cpp_string_literal(const std::string& text) {
 }  // namespace
 
 std::string baked_config_source(const prepare::PreparedStorage& prepared, const Knobs& knobs,
-                                const std::string& scene_name) {
+                                const std::string& scene_name, const prepare::PreparedAnimation* animation) {
   const PreparedScene& s = prepared.scene;
   const Features f = features_of(s, knobs);
   std::uint32_t shadow_texels = 0;
@@ -78,7 +78,8 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
   std::ostringstream out;
   out << "// Baked by `spanlight bake` from scene " << cpp_string_literal(scene_name) << ". Do not edit: bake again.\n"
       << "// Only what the scene uses is switched on, so the rest is never compiled.\n"
-      << "#pragma once\n\n#include <cstdint>\n\n#include \"spanlight/render.hpp\"\n\n"
+      << "#pragma once\n\n#include <cstdint>\n\n#include \"spanlight/render.hpp\"\n"
+      << (animation ? "#include \"spanlight/scene_animation.hpp\"\n" : "") << "\n"
       << "namespace baked {\n\n"
       << "inline constexpr spanlight::Features features{.max_projectors = " << int(f.max_projectors)
       << ", .shadows = " << boolean(f.shadows) << ", .pcf = " << boolean(f.pcf) << ",\n    .nearest = " << boolean(f.nearest)
@@ -106,11 +107,14 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
   for (int j = 0; j < s.projector_count; ++j) out << (s.projectors[j].shadows ? s.projectors[j].map_size : 0) << ", ";
   if (s.projector_count == 0) out << "0";
   out << "};\n\nextern const spanlight::PreparedScene scene;\n"
-      << "extern const spanlight::FrameMatrices matrices;  // the scene file's own pose\n\n}  // namespace baked\n";
+      << "extern const spanlight::FrameMatrices matrices;  // the scene file's own pose\n";
+  if (animation) out << baked_animation_config(*animation);
+  out << "\n}  // namespace baked\n";
   return out.str();
 }
 
-std::string baked_scene_source(const prepare::PreparedStorage& prepared, const std::string& scene_name) {
+std::string baked_scene_source(const prepare::PreparedStorage& prepared, const std::string& scene_name,
+                               const prepare::PreparedAnimation* animation) {
   const PreparedScene& s = prepared.scene;
   std::ostringstream out;
   out << "// Baked by `spanlight bake` from scene " << cpp_string_literal(scene_name) << ". Do not edit: bake again.\n"
@@ -171,15 +175,16 @@ std::string baked_scene_source(const prepare::PreparedStorage& prepared, const s
       << "const PreparedScene scene{" << s.width << ", " << s.height << ", {" << int(s.ambient[0]) << ", "
       << int(s.ambient[1]) << ", " << int(s.ambient[2]) << "}, textures, " << int(s.texture_count) << ", objects, "
       << s.object_count << ", projectors, " << int(s.projector_count) << ", " << s.max_vertex_count << "};\n\n"
-      << "const FrameMatrices matrices{clip_from_object, projector_from_object, light_clip_from_object};\n\n"
-      << "}  // namespace baked\n";
+      << "const FrameMatrices matrices{clip_from_object, projector_from_object, light_clip_from_object};\n";
+  if (animation) out << baked_animation_source(*animation);
+  out << "\n}  // namespace baked\n";
   return out.str();
 }
 
 void write_baked_scene(const prepare::PreparedStorage& prepared, const Knobs& knobs, const std::string& scene_name,
-                       io::OutputFolder& out) {
-  out.write(baked_config_file, baked_config_source(prepared, knobs, scene_name));
-  out.write(baked_scene_file, baked_scene_source(prepared, scene_name));
+                       io::OutputFolder& out, const prepare::PreparedAnimation* animation) {
+  out.write(baked_config_file, baked_config_source(prepared, knobs, scene_name, animation));
+  out.write(baked_scene_file, baked_scene_source(prepared, scene_name, animation));
 }
 
 }  // namespace spanlight::bake

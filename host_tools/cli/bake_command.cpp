@@ -1,4 +1,4 @@
-// spanlight bake SCENE.json --out DIR [--depfile FILE] [knobs | --config FILE]: C++ sources for a firmware build.
+// spanlight bake SCENE.json --out DIR [--depfile FILE] [--animation A.json] [knobs | --config FILE]: C++ sources for a firmware build.
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -9,6 +9,7 @@
 #include "bake/bake.hpp"
 #include "bake/depfile.hpp"
 #include "cli/accuracy_warning.hpp"
+#include "cli/animation_load.hpp"
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"
 #include "cli/load.hpp"
@@ -25,6 +26,7 @@ struct BakeArgs {
   std::string out;
   std::string depfile;  // where to list the files the bake read, for the build that runs it
   std::string config;   // `spanlight analyze --write-config` output; replaces the knob options
+  std::string animation;
   Knobs knobs;
   bool force = false;
 };
@@ -40,15 +42,27 @@ int run_bake(const BakeArgs& args) {
     scene = sweep::with_filter(*scene, point.filter);
     inputs.add(a.config);
   }
+  std::optional<scene::Animation> loaded;
+  if (!a.animation.empty()) {
+    loaded = load_animation_or_report(a.animation, *scene);
+    if (!loaded) return exit_bad_input;
+    inputs.add(std::filesystem::path(a.animation));
+  }
   io::OutputFolder out(a.out, "--out", a.force, inputs);  // checked before anything is prepared
   warn_if_inaccurate(a.knobs);
   const auto prepared = prepare_or_report(*scene);
   if (!prepared) return exit_bad_input;
+  std::unique_ptr<prepare::PreparedAnimation> animation;
+  if (loaded) {
+    animation = prepare_animation_or_report(*loaded, *scene, *prepared);
+    if (!animation) return exit_bad_input;
+  }
   std::string depfile_text;  // made before anything is written: a bad name leaves no output
   const std::filesystem::path outputs[2] = {out.path() / bake::baked_scene_file, out.path() / bake::baked_config_file};
   if (!a.depfile.empty()) {
     std::vector<std::filesystem::path> files_read = scene::files_read(*scene);
     if (!a.config.empty()) files_read.emplace_back(a.config);  // editing the config bakes again
+    if (animation) files_read.push_back(animation->source.file);
     const std::string refusal = bake::depfile_refusal(a.depfile, files_read, {outputs[0], outputs[1]});
     if (!refusal.empty()) {
       std::fprintf(stderr, "%s: --depfile: %s\n", a.depfile.c_str(), refusal.c_str());
@@ -61,7 +75,7 @@ int run_bake(const BakeArgs& args) {
       return exit_bad_input;
     }
   }
-  bake::write_baked_scene(*prepared, a.knobs, scene->name, out);
+  bake::write_baked_scene(*prepared, a.knobs, scene->name, out, animation.get());
   if (!a.depfile.empty()) {
     // Inside --out it is one of the bake's own files (listed in the folder's manifest, so the
     // next bake accepts the folder); elsewhere a file of its own.
@@ -86,6 +100,9 @@ Command add_bake_command(CLI::App& app) {
   cmd->add_flag("--force", args->force, "write into --out even when it holds other files (none is removed)");
   cmd->add_option("--depfile", args->depfile,
                   "also write FILE: a Makefile-syntax rule naming the scene and every file it read, for the build")
+      ->type_name("FILE");
+  cmd->add_option("--animation", args->animation,
+                  "also bake this animation (docs/animation-format.md) as baked::animation for scene_pose_at_frame")
       ->type_name("FILE");
   add_knob_options(*cmd, args->knobs);
   CLI::Option* config = cmd->add_option("--config", args->config,

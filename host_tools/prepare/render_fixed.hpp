@@ -33,12 +33,15 @@ class RenderRefused : public std::runtime_error {
   RenderStatus status_;
 };
 
-// render_frame into buffers of the frame's size; throws RenderRefused.
+// render_frame into buffers of the frame's size; throws RenderRefused. Without `matrices`,
+// at the scene's own pose (prepared.matrices); with them, at a run-time pose (pose.hpp).
 FixedFrame render_fixed(const PreparedStorage& prepared, const Knobs& knobs);
+FixedFrame render_fixed(const PreparedStorage& prepared, const FrameMatrices& matrices, const Knobs& knobs);
 
 // The same with hooks (tests, measurements): instantiates the pipeline where it is called.
 template <typename Hooks>
-FixedFrame render_fixed_with_hooks(const PreparedStorage& prepared, const Knobs& knobs, Hooks&& hooks) {
+FixedFrame render_fixed_with_hooks(const PreparedStorage& prepared, const FrameMatrices& matrices, const Knobs& knobs,
+                                   Hooks&& hooks) {
   return dispatch<host_features(PixelFormat::rgb888), true, false>(knobs, [&]<Features F>() {
     using Color = ColorTraits<F.format>;
     const PreparedScene& scene = prepared.scene;
@@ -59,7 +62,7 @@ FixedFrame render_fixed_with_hooks(const PreparedStorage& prepared, const Knobs&
     std::vector<std::uint8_t> tie_mask(tie_mask_bytes(static_cast<std::uint32_t>(pixels)));
     std::vector<CachedVertex> vertices(scene.max_vertex_count);
     const FrameTarget<F.format, std::uint32_t> target{color, frame.depth, map_spans, tie_mask, vertices};
-    const RenderStatus status = render_frame<F>(scene, prepared.matrices, target, knobs, hooks);
+    const RenderStatus status = render_frame<F>(scene, matrices, target, knobs, hooks);
     if (status != RenderStatus::ok) throw RenderRefused(status);
     frame.rgb.resize(pixels * 3);
     for (std::size_t i = 0; i < pixels; ++i) {
@@ -76,6 +79,11 @@ FixedFrame render_fixed_with_hooks(const PreparedStorage& prepared, const Knobs&
     }
     return frame;
   });
+}
+
+template <typename Hooks>
+FixedFrame render_fixed_with_hooks(const PreparedStorage& prepared, const Knobs& knobs, Hooks&& hooks) {
+  return render_fixed_with_hooks(prepared, prepared.matrices, knobs, static_cast<Hooks&&>(hooks));
 }
 
 const char* to_string(PixelFormat format);

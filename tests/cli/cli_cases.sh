@@ -105,6 +105,9 @@ render_unknown_option)
 render_unknown_backend)
   expect_refused_render "--backend" --backend gpu
   ;;
+render_both_needs_animation)
+  expect_refused_render "--backend: expected fixed or float without --animation, got both" --backend both
+  ;;
 render_span_3)
   expect_refused_render "--span" --span 3
   ;;

@@ -28,15 +28,17 @@ struct BakedFrame {
   static inline std::array<spanlight::CachedVertex, baked::max_vertex_count> vertices;
   static inline std::array<std::span<DepthT>, map_slots> maps;
 
-  // The shadow pool carved into one map per shadowed projector (empty for the others).
-  static Target target() {
+  // The shadow pool carved into one map per shadowed projector (empty for the others);
+  // band_rows > 0 draws the frame in bands of that many rows into the same buffers.
+  static Target target(std::uint16_t band_rows = 0) {
     std::uint32_t offset = 0;
     for (int j = 0; j < baked::projector_count; ++j) {
       const std::uint32_t size = baked::shadow_map_size[j];
       maps[static_cast<std::size_t>(j)] = std::span<DepthT>(shadow_pool).subspan(offset, size * size);
       offset += size * size;
     }
-    return {color, depth, std::span(maps).first(static_cast<std::size_t>(baked::projector_count)), tie_mask, vertices};
+    return {color, depth, std::span(maps).first(static_cast<std::size_t>(baked::projector_count)), tie_mask, vertices,
+            band_rows};
   }
 
   // Pixels holding a surface's depth: the denominator of "instructions per covered pixel".

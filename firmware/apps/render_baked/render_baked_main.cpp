@@ -1,14 +1,22 @@
 // render_baked: renders the scene baked into baked_scene.cpp / baked_config.hpp
 // (`spanlight bake`) into static buffers, measures the frame, and writes it out
 // through the HAL as a PPM. The same source builds for Cortex-M and the host.
+//   render_<scene> [OUT.ppm [BAND_ROWS]]
+// BAND_ROWS > 0 draws the frame in bands of that many rows (the buffers hold the whole
+// frame either way), each band pushed to the sink as it is finished; the measured
+// regions hold only rendering (common/band_sink.hpp), so their sum compares with the
+// whole frame's single region.
 //
-// A firmware engineer's own app looks like this: declare the buffers the baked (baked_frame.hpp)
-// configuration asks for, call render_frame, push the colour buffer to a display.
+// A firmware engineer's own app looks like this: declare the buffers the baked
+// configuration asks for (baked_frame.hpp), call render_frame, push the colour buffer
+// to a display.
 #include <array>
 #include <cstdint>
 #include <span>
 
+#include "app_args.hpp"
 #include "baked_frame.hpp"
+#include "band_sink.hpp"
 #include "hal/hal.hpp"
 #include "hal/log_line.hpp"
 
@@ -16,46 +24,43 @@ namespace {
 
 using namespace spanlight;
 using Frame = baked_frame::BakedFrame<baked::Depth, baked::features.multipass>;
-using baked_frame::Color;
 
 std::array<std::uint8_t, std::size_t{baked::width} * 3> line;  // one RGB888 row for the sink
-
-// Rows go out one at a time as RGB888, the way a display driver would take spans.
-bool write_frame(const char* path) {
-  hal::FrameSink sink;
-  if (!sink.open(path, {baked::width, baked::height})) return false;
-  for (std::uint16_t y = 0; y < baked::height; ++y) {
-    for (std::uint32_t x = 0; x < baked::width; ++x) {
-      const Colour c = Color::load(Frame::color.data() + (std::uint32_t{y} * baked::width + x) * Color::per_pixel);
-      line[x * 3] = static_cast<std::uint8_t>(red(c));
-      line[x * 3 + 1] = static_cast<std::uint8_t>(green(c));
-      line[x * 3 + 2] = static_cast<std::uint8_t>(blue(c));
-    }
-    if (!sink.flush_rect({0, y, baked::width, 1}, line, line.size())) return false;
-  }
-  return sink.close();
-}
 
 }  // namespace
 
 int spanlight::hal::app_main(Args args) {
   const char* out = args.size() > 1 ? args[1] : "frame.ppm";
-  const Frame::Target target = Frame::target();
+  std::uint32_t band_rows = 0;
+  if (args.size() > 2 && !apps::parse_count(args[2], 0, baked::height, band_rows)) {
+    log_line(LogLine() << "render_baked: band rows: expected an integer in 0.." << baked::height << ", got " << args[2]);
+    return 2;
+  }
+  const Frame::Target target = Frame::target(static_cast<std::uint16_t>(band_rows));
+  hal::FrameSink sink;
+  if (!sink.open(out, {baked::width, baked::height})) {
+    log_line(LogLine() << "render_baked: cannot write " << out);
+    return 1;
+  }
   CostCounter cost;
+  apps::BandSink<baked::features.format> bands{{}, band_rows ? &sink : nullptr, line, baked::width, &cost};
   cost.begin();
-  const RenderStatus status = render_frame<baked::features>(baked::scene, baked::matrices, target, baked::knobs);
+  const RenderStatus status = render_frame<baked::features>(baked::scene, baked::matrices, target, baked::knobs, bands);
   cost.end();
   if (status != RenderStatus::ok) {
     log_line(LogLine() << "render_baked: render_frame refused the frame: " << describe(status));
     return 1;
   }
-  if (!write_frame(out)) {
+  const bool written =
+      band_rows ? bands.ok : apps::write_rows<baked::features.format>(&sink, baked::width, 0, baked::height, Frame::color.data(), line);
+  if (!written || !sink.close()) {
     log_line(LogLine() << "render_baked: cannot write " << out);
     return 1;
   }
+  // Covered pixels, for "instructions per covered pixel" (with bands, of the last band only).
   const std::uint32_t covered = Frame::covered_pixels(baked::knobs.depth_bits);
   log_line(LogLine() << "render_baked: " << baked::scene_name << " " << baked::width << "x" << baked::height
-                     << " in " << cost.elapsed() << " " << CostCounter::unit() << ", covered " << covered
+                     << " in " << cost.elapsed() << " " << CostCounter::unit() << ", band rows " << band_rows << ", covered " << covered
                      << " pixels, stack peak " << stack_peak_bytes() << " bytes -> " << out);
   return 0;
 }

@@ -11,7 +11,8 @@ set(SPANLIGHT_BAKED_SCENES
   "mesh_bear|scenes/mesh_bear.json|--format rgb565 --depth-bits 16"
   "v2_mip_floor|scenes/v2_mip_floor.json|"
   "v2_falloff_corridor|scenes/v2_falloff_corridor.json|"
-  "v2_facing_wall|scenes/v2_facing_wall.json|")
+  "v2_facing_wall|scenes/v2_facing_wall.json|"
+  "live_spotlight|scenes/live_spotlight.json|--format rgb565 --depth-bits 16")
 
 # spanlight_baked_scene_fields(<entry> <name_var> <file_var> <options_var>)
 function(spanlight_baked_scene_fields entry name_var file_var options_var)

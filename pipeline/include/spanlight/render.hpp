@@ -37,6 +37,7 @@ enum class RenderStatus : std::uint8_t {
   tie_mask_too_small,    // the multipass needs tie_mask_bytes(width * band rows) bytes
   depth_type_too_narrow, // 24-bit depth asked of 16-bit depth storage
   vertices_too_small,    // the vertex buffer holds fewer than the scene's max_vertex_count
+  bad_pose,              // render_frame_at_pose: the pose's matrices cannot be built (PoseResult, pose.hpp)
 };
 
 // What each status means, for messages.
@@ -53,6 +54,7 @@ constexpr const char* describe(RenderStatus s) {
     case RenderStatus::tie_mask_too_small: return "the multipass's tie mask is smaller than tie_mask_bytes(pixels)";
     case RenderStatus::depth_type_too_narrow: return "24-bit depth needs 32-bit depth storage";
     case RenderStatus::vertices_too_small: return "the vertex buffer is smaller than the scene's largest object (max_vertex_count)";
+    case RenderStatus::bad_pose: return "the pose's matrices cannot be built (a view, frustum or model out of range)";
   }
   return "unknown status";
 }

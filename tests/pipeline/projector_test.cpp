@@ -45,9 +45,8 @@ TEST_CASE("geometry wholly behind the projector gets ambient light only, exactly
   // round(255 * 0.2 * 0.6) = round(30.6) = 31 as well.
   constexpr std::uint8_t ambient_only = 31;
   for (const bool fused : {false, true}) {
-    spanlight::prepare::FixedOptions options;
-    options.precision.fused = fused;
-    const auto frame = spanlight::prepare::render_fixed(*prepared, options);
+    const spanlight::Knobs knobs = pt::knobs_with(fused ? spanlight::Passes::fused : spanlight::Passes::multipass);
+    const auto frame = spanlight::prepare::render_fixed(*prepared, knobs);
     int covered = 0, wrong = 0, disagree_with_float = 0;
     for (std::size_t i = 0; i < frame.depth.size(); ++i) {
       if (frame.depth[i] == spanlight::depth_clear(24)) continue;
@@ -121,8 +120,7 @@ TEST_CASE("a floor that q = 0 cuts through is lit only where q > 0 and inside th
 
     const auto prepared = spanlight::prepare::prepare_scene(s);
     const auto reference = spanlight::float_model::render_float(s);
-    spanlight::prepare::FixedOptions options;
-    const auto fixed = spanlight::prepare::render_fixed(*prepared, options);
+    const auto fixed = spanlight::prepare::render_fixed(*prepared, spanlight::Knobs{});
 
     // Where the fixed pipeline may disagree with the float model: its s/q and
     // t/q are within the span tolerance of the exact values (1/8 texel of the

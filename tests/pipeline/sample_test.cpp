@@ -234,9 +234,29 @@ TEST_CASE("the samplers for a size fixed at compile time equal the general repea
     INFO("size " << width << "x" << height);
     CHECK(wrong == 0);
   };
-  check_size.template operator()<0, 0>();
   check_size.template operator()<1, 2>();
   check_size.template operator()<4, 4>();
   check_size.template operator()<6, 3>();
   check_size.template operator()<8, 8>();
+}
+
+TEST_CASE("a repeating texture one texel wide or high reads its own texels, nearest and bilinear", "[sample]") {
+  // A repeating 1xN texture is valid (a power of two), and every coordinate wraps to its one
+  // column. texel_grid gives it x_shift = 32 - log2(1) = 32, and `x >> 32` on a 32-bit
+  // coordinate is undefined (on x86 it leaves x unchanged: a read far outside the texture).
+  spanlight::scene::Image image{1, 4, {}};
+  for (int row = 0; row < 4; ++row) image.rgb.insert(image.rgb.end(), {static_cast<std::uint8_t>(60 * row), 7, 9});
+  const std::vector<std::uint32_t> framed = spanlight::prepare::framed_texels(image, Wrap::repeat);
+  const spanlight::TextureLevel level{framed.data() + 3 + 1, 1, 4, 3};
+  const TexelGrid g = spanlight::texel_grid(level, 8);
+  REQUIRE(g.x_shift <= 32);
+  // v = 1.5 texels of 4 (a fraction 1.5 / 4 of 2^32): row_from_bottom 1 = row_from_top 2: r 120.
+  const std::uint32_t v = 0x60000000u;
+  int wrong = 0;
+  for (const std::uint32_t u : {0u, 0x40000000u, 0x80000000u, 0xFFFFFFFFu}) {
+    wrong += rgb(spanlight::nearest_repeat(g, u, v)) != std::array<int, 3>{120, 7, 9};
+    // Bilinear half a texel back: v = 1.0 texel, fy = 0, both columns the one texel.
+    wrong += rgb(spanlight::bilinear_repeat(g, u, 0x40000000u)) != std::array<int, 3>{120, 7, 9};
+  }
+  CHECK(wrong == 0);
 }

@@ -101,7 +101,7 @@ struct ReferencePixel {
   double lambda[3];  // screen-space barycentrics
   double divisor;   // sum lambda_i / w_i: the screen-linear divisor, up to scale
   double u, v;      // texels
-  double s[projectors], t[projectors], q[projectors];  // interpolated s, t, q (not the ratios)
+  double s[projectors], t[projectors], r[projectors], q[projectors];  // interpolated s, t, r, q (not the ratios)
 };
 
 struct Reference {
@@ -188,6 +188,7 @@ Reference reference_of(const spanlight::prepare::PreparedStorage& prepared) {
       const glm::dvec4 strq = fm::interpolate_projector(t, f, static_cast<std::size_t>(j));
       p.s[j] = strq.x;
       p.t[j] = strq.y;
+      p.r[j] = strq.z;
       p.q[j] = strq.w;
     }
     ref.pixels.push_back(p);
@@ -278,22 +279,30 @@ double uv_error(std::uint32_t fixed, double truth, int x_shift) {
   return std::fabs(std::remainder(std::ldexp(static_cast<double>(fixed), -x_shift) - truth, size));
 }
 
-// How the walk treats one group along a span (walk.hpp, GroupSpan::start), read from the
-// span's two ends, which are exact points.
+// How the walk treats one group along a span (walk.hpp, GroupSpan::start), read from what it
+// handed the span's pixels: the ends are exact points, except where the group is held
+// constant, where every pixel shows the first one's values.
 enum class Mode { interpolated, constant_behind, constant_outside, per_pixel };
 
-Mode projector_mode(const PixelValues& a, const PixelValues& b, int j) {
-  if (!a.front[j] && !b.front[j]) return Mode::constant_behind;
-  if (a.front[j] != b.front[j]) return Mode::per_pixel;
-  bool clamped = false;
-  for (const std::int32_t x : {a.s[j], a.t[j], a.r[j], b.s[j], b.t[j], b.r[j]})
-    clamped = clamped || x <= -spanlight::proj_limit || x >= spanlight::proj_limit;
-  if (!clamped) return Mode::interpolated;
+Mode projector_mode(const std::vector<std::pair<std::uint32_t, PixelValues>>& fixed, std::size_t a, std::size_t b, int j) {
+  const PixelValues& first = fixed[a].second;
+  const PixelValues& last = fixed[b].second;
+  if (!first.front[j] && !last.front[j]) return Mode::constant_behind;
+  if (first.front[j] != last.front[j]) return Mode::per_pixel;
+  // Held outside the frustum: one of s/q, t/q, r/q outside [0, 1] at the first pixel, and every pixel the same.
   constexpr std::int32_t one = std::int32_t{1} << spanlight::proj_frac_bits;
-  const std::int32_t pa[3] = {a.s[j], a.t[j], a.r[j]}, pb[3] = {b.s[j], b.t[j], b.r[j]};
-  for (int k = 0; k < 3; ++k)
-    if ((pa[k] < 0 && pb[k] < 0) || (pa[k] > one && pb[k] > one)) return Mode::constant_outside;
-  return Mode::per_pixel;
+  bool outside = false;
+  for (const std::int32_t x : {first.s[j], first.t[j], first.r[j]}) outside = outside || x < 0 || x > one;
+  bool held = outside;
+  for (std::size_t i = a + 1; held && i <= b; ++i) {
+    const PixelValues& v = fixed[i].second;
+    held = v.s[j] == first.s[j] && v.t[j] == first.t[j] && v.r[j] == first.r[j];
+  }
+  if (held) return Mode::constant_outside;
+  bool clamped = false;
+  for (const std::int32_t x : {first.s[j], first.t[j], first.r[j], last.s[j], last.t[j], last.r[j]})
+    clamped = clamped || x <= -spanlight::proj_limit || x >= spanlight::proj_limit;
+  return clamped ? Mode::per_pixel : Mode::interpolated;
 }
 
 // A pixel inside an interpolated span (budget::interpolated_span): its bound from the ends'
@@ -364,7 +373,7 @@ void check_triangle(const spanlight::prepare::PreparedStorage& prepared, const S
     Mode mode[projectors];
     double projector_inside[projectors];
     for (int j = 0; j < projectors; ++j) {
-      mode[j] = b > a ? projector_mode(fixed[a].second, fixed[b].second, j) : Mode::per_pixel;
+      mode[j] = b > a ? projector_mode(fixed, a, b, j) : Mode::per_pixel;
       projector_inside[j] = -1.0;
       if (mode[j] != Mode::interpolated) continue;
       // init brings the larger divisor into [2^30, 2^31): the smaller loses up to 2^-30 D_max / D_min,
@@ -400,16 +409,15 @@ void check_triangle(const spanlight::prepare::PreparedStorage& prepared, const S
         tally.wrong_side += !v.front[j];  // q~ > 0 wherever q exceeds its error
         const double truth_s = std::clamp(p.s[j] / p.q[j], -4.0, 4.0), truth_t = std::clamp(p.t[j] / p.q[j], -4.0, 4.0);
         if (mode[j] == Mode::constant_outside) {
-          // Held at the first pixel's values: the light is off all along, so the truth must be outside [0, 1]
-          // on that same side in one of s/q, t/q, r/q, up to its exact error.
+          // Held at the first pixel's values: the light is off all along, so the truth must lie outside
+          // [0, 1] on the side the held value does in one of s/q, t/q, r/q, up to its exact error.
           const double e = bounds[i].projector[j] / ref.texels[j];
           const PixelValues& first = fixed[a].second;
+          const std::int32_t held[3] = {first.s[j], first.t[j], first.r[j]};
+          const double truth[3] = {truth_s, truth_t, p.r[j] / p.q[j]};
           bool outside = false;
-          const std::int32_t held[2] = {first.s[j], first.t[j]};
-          const double truth[2] = {truth_s, truth_t};
-          for (int k = 0; k < 2; ++k)
+          for (int k = 0; k < 3; ++k)
             outside = outside || (held[k] < 0 && truth[k] <= e) || (held[k] > (1 << 28) && truth[k] >= 1.0 - e);
-          outside = outside || first.r[j] < 0 || first.r[j] > (1 << 28);  // r/q: the truth is not in the reference
           tally.outside_wrong += !outside;
           continue;
         }

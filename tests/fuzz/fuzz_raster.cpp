@@ -98,7 +98,10 @@ void check_triangle(const sl::ScreenVertex (&v)[3], const sl::ClipVertex<P>* con
     sl::set_projector<P>(ordered, 0, a);
     const auto image = static_cast<std::uint16_t>(in.in(1, 4096, 16));
     const std::uint16_t texels[1] = {image};
-    const std::uint8_t texel_bits[1] = {static_cast<std::uint8_t>(sl::proj_frac_bits - (32 - fixedpoint::clz32(image - 1u)))};
+    // Q3.28 units per texel of the larger side, as draw_pass works it out (which takes clz32(0) for a
+    // one-texel image: undefined; here 0 bits of size).
+    const int size_bits = image > 1 ? 32 - fixedpoint::clz32(image - 1u) : 0;
+    const std::uint8_t texel_bits[1] = {static_cast<std::uint8_t>(sl::proj_frac_bits - size_bits)};
     // uv in texels * 2^frac (8..16), stepped as a clamped texture's (shift 0) or a repeating one's (shifted up).
     const int frac = static_cast<int>(in.in(8, 16, 8));
     const auto up = static_cast<std::uint8_t>(in.in(0, 24 - frac, 8));

@@ -5,9 +5,9 @@
 
 #include <cstdint>
 
-#include "spanlight/project.hpp"
-#include "spanlight/setup.hpp"
-#include "spanlight/span.hpp"
+#include "spanlight/1_vertex/project.hpp"
+#include "spanlight/2_triangle/attributes.hpp"
+#include "spanlight/2_triangle/setup.hpp"
 
 namespace benchmarks {
 
@@ -26,7 +26,7 @@ inline spanlight::TriangleSetup floor_setup() {
                                              spanlight::project(corners[1], width, height),
                                              spanlight::project(corners[2], width, height)};
   spanlight::TriangleSetup setup{};
-  spanlight::setup_triangle(screen, spanlight::Cull::none, width, height, setup);
+  spanlight::setup_triangle(screen, spanlight::Cull::none, height, setup);
   return setup;
 }
 

@@ -2,8 +2,8 @@
 # Where a frame's instructions go on the host, stage by stage: builds the render_baked app
 # of a baked scene with -O2 -g (the Release host apps carry no line info), runs it under
 # callgrind, and sums the executed instructions (Ir) per pipeline source file, with inlined
-# code counted in the file it comes from. The pipeline's files are its stages (transform,
-# clip, project, setup, perspective, span, sample, shade, shadow, passes), so the table reads
+# code counted in the file it comes from. The pipeline's files are its stages (1_vertex/ ..
+# 5_frame/, one job a file: transform.hpp, setup.hpp, walk.hpp, texture.hpp, ...), so the table reads
 # as "share of the frame per stage". Proportions only: x86-64 is not Cortex-M; QEMU counts
 # (spanlight sweep, per pass) are the figures of record.
 #   profile_stages.sh BUILD_DIR SCENE [WORK_DIR]     (the host build's bake of render_SCENE_host)

@@ -1,5 +1,5 @@
 // Per-triangle work before any pixel: the perspective divide of three
-// vertices (project.hpp) and the triangle setup (setup.hpp).
+// vertices (1_vertex/project.hpp) and the triangle setup (2_triangle/setup.hpp).
 #include <benchmark/benchmark.h>
 
 #include "benchmark_triangle.hpp"
@@ -12,7 +12,7 @@ void project_and_setup(benchmark::State& state) {
                                                spanlight::project(benchmarks::corners[1], benchmarks::width, benchmarks::height),
                                                spanlight::project(benchmarks::corners[2], benchmarks::width, benchmarks::height)};
     spanlight::TriangleSetup setup{};
-    const bool visible = spanlight::setup_triangle(screen, spanlight::Cull::none, benchmarks::width, benchmarks::height, setup);
+    const bool visible = spanlight::setup_triangle(screen, spanlight::Cull::none, benchmarks::height, setup);
     benchmark::DoNotOptimize(visible);
     benchmark::DoNotOptimize(setup);
   }

@@ -60,8 +60,7 @@ TEST_CASE("light summing far above 1 saturates to the surface colour", "[extreme
   bare.projectors.clear();
   const pr::FixedFrame surface = pr::render_fixed(*pr::prepare_scene(bare), default_options());
   for (const bool fused : {false, true}) {
-    pr::FixedOptions o = default_options();
-    o.precision.fused = fused;
+    const spanlight::Knobs o = with_passes(default_options(), fused);
     const Both b = render_both(s, o);
     dump(b, fused ? "saturate_fused" : "saturate");
     const Agreement a = agree(b, 1, tolerance);
@@ -92,8 +91,8 @@ TEST_CASE("light summing far above 1 saturates to the surface colour", "[extreme
 
 TEST_CASE("a bright projector over a dim bilinear image: light within 3 levels of the float model",
           "[extremes][colour]") {
-  // Regression (found by this suite, fixed; docs/limits.md): projector_light (shade.hpp) samples the image
-  // with sample<Bilinear>, which rounds the blended texel to 8 bits (Rgb8),
+  // Regression (found by this suite, fixed; docs/limits.md): the projector's light samples the image
+  // with a bilinear fetch, which rounds the blended texel to 8 bits (Rgb8),
   // and only then multiplies by the projector's colour (Q8.8) and the shadow
   // factor. The rounding error, up to 0.5 level, is multiplied by the
   // colour: up to 8 levels of light at colour 16, 150 at colour 300 (where a
@@ -101,7 +100,7 @@ TEST_CASE("a bright projector over a dim bilinear image: light within 3 levels o
   // 0.25 level, the fixed pipeline rounds it to 0 and draws no light, the
   // float model 0.29). The spec bounds a projector's colour only below (>= 0).
   // The fix: sample the projector image without the final rounding (the
-  // blend times 2^16, as sample.hpp's Texel16 describes) and round once after
+  // blend times 2^16, as 4_pixel/texture.hpp's Texel16 describes) and round once after
   // colour * blend * shadow: (colour * blend16 * shadow + 2^31) >> 32, a
   // product below 2^49.
   // Here: colour 16 over a 4x4 ramp of levels 0..15, ambient 0, white

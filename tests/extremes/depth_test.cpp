@@ -18,10 +18,9 @@ namespace {
 
 constexpr int tolerance = 3;  // levels, as in near_plane_test.cpp
 
-pr::FixedOptions with_depth(int bits, bool fused) {
-  pr::FixedOptions o = default_options();
-  o.precision.depth_bits = static_cast<std::uint8_t>(bits);
-  o.precision.fused = fused;
+spanlight::Knobs with_depth(int bits, bool fused) {
+  spanlight::Knobs o = with_passes(default_options(), fused);
+  o.depth_bits = static_cast<std::uint8_t>(bits);
   return o;
 }
 

@@ -162,17 +162,21 @@ struct Both {
   std::uint32_t depth_clear = 0;
 };
 
-inline pr::FixedOptions default_options() {
-  pr::FixedOptions o;  // the CLI's defaults: RGB888, 8-bit table, one Newton step, 24-bit depth
-  return o;
+inline spanlight::Knobs default_options() {
+  return spanlight::Knobs{};  // the CLI's defaults: RGB888, 8-bit table, one Newton step, 24-bit depth, fused
 }
 
-inline Both render_both(const sc::Scene& s, const pr::FixedOptions& options = default_options()) {
+inline spanlight::Knobs with_passes(spanlight::Knobs k, bool fused) {
+  k.passes = fused ? spanlight::Passes::fused : spanlight::Passes::multipass;
+  return k;
+}
+
+inline Both render_both(const sc::Scene& s, const spanlight::Knobs& options = default_options()) {
   const auto prepared = pr::prepare_scene(s);
   Both b;
   b.fixed = pr::render_fixed(*prepared, options);
   b.ref = fm::render_float(s);
-  b.depth_clear = depth_clear(options.precision.depth_bits);
+  b.depth_clear = depth_clear(options.depth_bits);
   return b;
 }
 

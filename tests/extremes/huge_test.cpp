@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "extremes_support.hpp"
@@ -130,22 +131,24 @@ TEST_CASE("coordinates up to 1e4 units: a room 2e4 units across around the eye",
   CHECK(a.unexplained == 0);
 }
 
-TEST_CASE("uv offset by 1e4 repeats: sub-texel bits shrink as documented", "[extremes][huge]") {
+TEST_CASE("uv offset by many repeats: sub-texel bits shrink as documented", "[extremes][huge]") {
   // A face-on square showing one repeat of a checker, magnified (one texel
-  // over many pixels), at uv [0, 1] and at uv [1e4, 1e4 + 1]. With repeat
+  // over many pixels), at uv [0, 1] and offset by many repeats. With repeat
   // and a power-of-two size both show the same texels; the larger texel
   // coordinates leave fewer sub-texel bits (prepare.cpp, uv_frac_bits_for:
-  // 29 minus the integer bits of the largest |uv * size|, at most 16), so the
+  // 29 minus the integer bits of the largest |uv * size|, from 8 to 16), so the
   // bilinear blend is quantised to 2^-frac texel: a 16-texel image at 1e4
   // repeats has 1.6e5 texels -> 18 bits -> 11 sub-texel bits; 4096 texels
-  // -> 4.1e7 -> 26 bits -> 3 sub-texel bits (steps of 1/8 texel).
+  // at 500 repeats (the most below prepare's 2^21 texels) -> 2.05e6 -> 21 bits -> 8.
   // Bound: neighbouring texels differ by G = 200 levels; the sampled position
-  // is off by <= 2^-frac (quantised uv) + 2^-8 (bilinear weight) + 2^-10
-  // (span drift on a face-on square, where linear stepping is exact up to
-  // the step's rounding); the colour by G times that per axis, plus 3.
+  // is off by <= 2^-frac (quantised uv) + 2^-8 (bilinear weight) + 2^-(T+1)
+  // (span drift on a face-on square, where the quadratic steps are exact up to
+  // their rounding, which segments.hpp keeps below 2^-(T+1) texel, T the
+  // tolerance knob); the colour by G times that per axis, plus 3.
+  const int tolerance_log2 = spanlight::Knobs{}.tolerance_log2;
   for (const int size : {16, 4096}) {
     if (sanitized && size == 4096) continue;  // 48 MB texture; the plain build covers it
-    for (const double offset : {0.0, 1e4}) {
+    for (const double offset : {0.0, size == 16 ? 1e4 : 500.0}) {
       sc::Scene s = make_scene(128, 128, {0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 30.0, 1.0, 10.0);
       s.ambient = glm::dvec3(1.0);
       const int cell = size / 4;
@@ -160,9 +163,10 @@ TEST_CASE("uv offset by 1e4 repeats: sub-texel bits shrink as documented", "[ext
       const auto prepared = pr::prepare_scene(s);
       const int frac = prepared->objects[0].uv_frac_bits;
       const double largest = (offset + 0.3125) * size;
-      const int expected_frac = largest < 1.0 ? 16 : std::clamp(29 - (static_cast<int>(std::floor(std::log2(largest))) + 1), 0, 16);
+      const int expected_frac = largest < 1.0 ? 16 : std::clamp(29 - (static_cast<int>(std::floor(std::log2(largest))) + 1), 8, 16);
       CHECK(frac == expected_frac);
-      const double error_texels = std::ldexp(1.0, -frac) + std::ldexp(1.0, -8) + std::ldexp(1.0, -10);
+      CHECK(frac == (offset == 0.0 ? (size == 16 ? 16 : 16) : (size == 16 ? 11 : 8)));
+      const double error_texels = std::ldexp(1.0, -frac) + std::ldexp(1.0, -8) + std::ldexp(1.0, -(tolerance_log2 + 1));
       const int bound = static_cast<int>(std::ceil(200.0 * 2.0 * error_texels)) + tolerance;
       const Both b = render_both(s);
       const Agreement a = agree(b, 0, bound);
@@ -201,7 +205,7 @@ TEST_CASE("beyond the formats: coordinates >= 16384 and matrix entries >= 2^13 a
     return s;
   };
   const auto accepted = pr::prepare_scene(with_matrix_entry(ok));
-  const auto& m = accepted->objects[0].clip_from_object;
+  const auto& m = accepted->clip_from_object[0];
   double largest = 0;
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) largest = std::max(largest, std::fabs(fixedpoint::mat4_block_entry(m, c, r)));
@@ -241,7 +245,7 @@ TEST_CASE("clip-space w near the transform's bound: guard-band distances do not 
   t.model[3][3] = 1;
   s.objects.push_back(t);
   const auto prepared = pr::prepare_scene(s);  // accepted: every entry of P * V * M is < 2^13
-  const spanlight::Vec4Wide far_vertex = spanlight::transform(prepared->objects[0].clip_from_object,
+  const spanlight::Vec4Wide far_vertex = spanlight::transform(prepared->clip_from_object[0],
                                                               prepared->objects[0].positions);
   const std::int64_t guard = spanlight::guard_band(s.width, s.height);
   std::int64_t product = 0;
@@ -256,7 +260,7 @@ TEST_CASE("clip-space w near the transform's bound: guard-band distances do not 
   CHECK(a.unexplained == 0);
 }
 
-TEST_CASE("texel coordinates beyond 2^29 are refused by prepare, not wrapped", "[extremes][huge]") {
+TEST_CASE("texel coordinates beyond 2^21 are refused by prepare, not wrapped", "[extremes][huge]") {
   // Regression (found by this suite, fixed; docs/limits.md): prepare.cpp's uv_frac_bits_for keeps |uv * size| * 2^frac
   // below 2^30 only down to frac = 0; a larger texel coordinate (allowed by
   // the loader: any finite uv) is still rounded with llround and cast to
@@ -265,6 +269,7 @@ TEST_CASE("texel coordinates beyond 2^29 are refused by prepare, not wrapped", "
   // have the analogous check (PrepareError beyond 16384 units); uvs have none.
   // The fix: in prepare_scene, throw PrepareError when the largest
   // |uv * size| of an object is not below 2^29 (before uv_frac_bits_for).
+  // The bound is now 2^21 texels (prepare.hpp, texel_coordinate_limit: 8 sub-texel bits in 29).
   // uv = 2e5 on a 4096-texel texture is 8.2e8 texels (> 2^29 = 5.4e8).
   sc::Scene s = make_scene(64, 64, {0, 0, 4}, {0, 0, 0}, {0, 1, 0}, 40.0, 1.0, 10.0);
   s.ambient = glm::dvec3(1.0);
@@ -274,9 +279,15 @@ TEST_CASE("texel coordinates beyond 2^29 are refused by prepare, not wrapped", "
   square.texture = 0;
   s.objects.push_back(square);
   CHECK_THROWS_AS(pr::prepare_scene(s), pr::PrepareError);
-  // Just inside the bound (uv 1.3e5: 5.3e8 texels < 2^29) it is accepted.
-  for (auto& uv : s.objects[0].mesh.uvs) uv.x = uv.x > 0 ? 1.3e5 : -1.3e5;
-  CHECK_NOTHROW(pr::prepare_scene(s));
+  // Just beyond the bound (uv 512.5: 2.0992e6 texels > 2^21 = 2.0972e6) it is refused,
+  // just inside it (uv 511.5: 2.0951e6 texels) accepted, with 8 sub-texel bits.
+  REQUIRE(pr::texel_coordinate_limit == 2097152.0);
+  for (auto& uv : s.objects[0].mesh.uvs) uv.x = uv.x > 0 ? 512.5 : -512.5;
+  CHECK_THROWS_AS(pr::prepare_scene(s), pr::PrepareError);
+  for (auto& uv : s.objects[0].mesh.uvs) uv.x = uv.x > 0 ? 511.5 : -511.5;
+  std::unique_ptr<pr::PreparedStorage> inside;
+  CHECK_NOTHROW(inside = pr::prepare_scene(s));
+  if (inside) CHECK(inside->objects[0].uv_frac_bits == 8);
 }
 
 TEST_CASE("clipping never keeps a vertex beyond a plane it clipped against", "[extremes][huge]") {

@@ -92,7 +92,7 @@ TEST_CASE("4096x4096 output: one render, checked on sampled rows against the cov
     std::array<fm::SnappedVertex, 3> tri{};
     for (std::uint32_t k = 0; k < 3; ++k) {
       const spanlight::ScreenVertex v =
-          spanlight::project(spanlight::transform(object.clip_from_object, object.positions + object.indices[k] * 3), 4096, 4096);
+          spanlight::project(spanlight::transform(prepared->matrices.clip_from_object[o], object.positions + object.indices[k] * 3), 4096, 4096);
       tri[k] = {v.x, v.y};
       const fm::WindowPoint exact = fm::to_window(vp * glm::dvec4(s.objects[o].mesh.positions[object.indices[k]], 1.0), 4096, 4096);
       worst = std::max({worst, std::fabs(v.x / 256.0 - exact.x), std::fabs(v.y / 256.0 - exact.y)});

@@ -20,6 +20,7 @@
 #include <random>
 #include <vector>
 
+#include "../pipeline/eye_pass.hpp"
 #include "extremes_support.hpp"
 #include "float_model/clip.hpp"
 #include "float_model/transform.hpp"
@@ -31,37 +32,19 @@ namespace {
 
 // ---- the fixed pipeline's coverage ----------------------------------------------------------
 
-struct CountingKernel {
-  std::vector<int>* counts;
-  int width, height;
-  bool* outside;
-  spanlight::SpanNeeds needs() const { return {false, 0, 0}; }
-  void object(const spanlight::ObjectData&) {}
-  template <typename V>
-  void pixel(std::int32_t i, const V&) {
-    if (i < 0 || i >= width * height) {
-      *outside = true;
-      return;
-    }
-    ++(*counts)[static_cast<std::size_t>(i)];
-  }
-};
-
 // How many times the eye pass's geometry walk covers each pixel (no depth test).
-std::vector<int> coverage_counts(const spanlight::PreparedScene& scene) {
-  using F = spanlight::HostFeatures<spanlight::PixelFormat::rgb888, 8, 1>;
-  std::vector<int> counts(std::size_t{scene.width} * scene.height, 0);
+std::vector<int> coverage_counts(const pr::PreparedStorage& prepared) {
   bool outside = false;
-  CountingKernel kernel{&counts, scene.width, scene.height, &outside};
-  spanlight::draw_pass<F>(scene, spanlight::PassView{scene.width, scene.height, -1}, spanlight::Precision{}, kernel);
+  std::vector<int> counts = spanlight::ptest::eye_coverage_counts(prepared.scene, prepared.matrices, &outside);
   REQUIRE_FALSE(outside);
   return counts;
 }
 
 // ---- check (1): the rule on the pipeline's own snapped vertices -------------------------------
 
-int rule_mismatches(const spanlight::PreparedScene& scene) {
-  const std::vector<int> counts = coverage_counts(scene);
+int rule_mismatches(const pr::PreparedStorage& prepared) {
+  const spanlight::PreparedScene& scene = prepared.scene;
+  const std::vector<int> counts = coverage_counts(prepared);
   std::vector<int> reference(counts.size(), 0);
   for (std::uint16_t o = 0; o < scene.object_count; ++o) {
     const spanlight::ObjectData& object = scene.objects[o];
@@ -69,8 +52,7 @@ int rule_mismatches(const spanlight::PreparedScene& scene) {
       fm::SnappedVertex v[3];
       for (std::uint32_t k = 0; k < 3; ++k) {
         const std::uint32_t index = object.indices[tri * 3 + k];
-        const ScreenVertex sv =
-            spanlight::project(spanlight::transform(object.clip_from_object, object.positions + index * 3), scene.width, scene.height);
+        const ScreenVertex sv = spanlight::ptest::eye_screen_vertex(scene, prepared.matrices, o, index);
         v[k] = {sv.x, sv.y};
       }
       for (const auto& [x, y] : fm::covered_pixels(v, scene.width, scene.height))
@@ -116,7 +98,7 @@ double vertex_error_px(const sc::Scene& s, const sc::Object& o, const std::array
   return 1.0 / 512.0 + std::ldexp(1.0, -15) + ndc * std::max(s.width, s.height) / 2.0;
 }
 
-std::vector<ExactTriangle> exact_triangles(const sc::Scene& s, const spanlight::PreparedScene& prepared) {
+std::vector<ExactTriangle> exact_triangles(const sc::Scene& s, const pr::PreparedStorage& prepared) {
   std::vector<ExactTriangle> out;
   for (std::size_t oi = 0; oi < s.objects.size(); ++oi) {
     const sc::Object& o = s.objects[oi];
@@ -134,7 +116,7 @@ std::vector<ExactTriangle> exact_triangles(const sc::Scene& s, const spanlight::
         e.outline.emplace_back(p.x, p.y);
         w_min = std::min(w_min, v.position.w);
       }
-      e.margin = 2.0 * vertex_error_px(s, o, o.mesh.triangles[t], prepared.objects[oi].clip_from_object, w_min);
+      e.margin = 2.0 * vertex_error_px(s, o, o.mesh.triangles[t], prepared.clip_from_object[oi], w_min);
       out.push_back(std::move(e));
     }
   }
@@ -167,7 +149,7 @@ struct OutlineCheck {
   double largest_margin = 0;
 };
 
-OutlineCheck check_outline(const sc::Scene& s, const spanlight::PreparedScene& prepared) {
+OutlineCheck check_outline(const sc::Scene& s, const pr::PreparedStorage& prepared) {
   const std::vector<int> counts = coverage_counts(prepared);
   const std::vector<ExactTriangle> triangles = exact_triangles(s, prepared);
   OutlineCheck r;
@@ -269,8 +251,8 @@ TEST_CASE("sub-pixel triangles cover exactly the pixels the rule gives, and no o
   view.scene.objects.push_back(mesh_object("specks", positions, triangles));
   snap_positions_to_q16(view.scene);
   const auto prepared = pr::prepare_scene(view.scene);
-  CHECK(rule_mismatches(prepared->scene) == 0);
-  const OutlineCheck r = check_outline(view.scene, prepared->scene);
+  CHECK(rule_mismatches(*prepared) == 0);
+  const OutlineCheck r = check_outline(view.scene, *prepared);
   INFO("certain pixels " << r.certain << ", wrong " << r.wrong << ", inside one triangle " << r.inside_once
                          << ", largest margin " << r.largest_margin << " px");
   CHECK(r.wrong == 0);
@@ -307,8 +289,8 @@ TEST_CASE("slivers: long triangles far thinner than a pixel", "[extremes][tiny]"
     view.scene.objects.push_back(mesh_object("slivers", positions, triangles));
     snap_positions_to_q16(view.scene);
     const auto prepared = pr::prepare_scene(view.scene);
-    if (longest <= 300.0) CHECK(rule_mismatches(prepared->scene) == 0);
-    const OutlineCheck r = check_outline(view.scene, prepared->scene);
+    if (longest <= 300.0) CHECK(rule_mismatches(*prepared) == 0);
+    const OutlineCheck r = check_outline(view.scene, *prepared);
     INFO("up to " << longest << " px: certain pixels " << r.certain << ", wrong " << r.wrong << ", largest margin "
                   << r.largest_margin << " px");
     CHECK(r.wrong == 0);
@@ -323,7 +305,7 @@ TEST_CASE("fans of slivers and of sub-pixel slices are watertight", "[extremes][
     view.scene.objects.push_back(fan(view, {-30.25, 10.5}, 4000.0, a0, a1, 64));
     snap_positions_to_q16(view.scene);
     const auto prepared = pr::prepare_scene(view.scene);
-    const OutlineCheck r = check_outline(view.scene, prepared->scene);
+    const OutlineCheck r = check_outline(view.scene, *prepared);
     INFO("certain pixels " << r.certain << ", wrong " << r.wrong << ", max count " << r.max_count << ", covered once "
                            << r.inside_once << ", largest margin " << r.largest_margin << " px");
     CHECK(r.max_count == 1);
@@ -336,8 +318,8 @@ TEST_CASE("fans of slivers and of sub-pixel slices are watertight", "[extremes][
       view.scene.objects.push_back(fan(view, centre, 0.75, 0.0, 2.0 * std::numbers::pi, 64));
       snap_positions_to_q16(view.scene);
       const auto prepared = pr::prepare_scene(view.scene);
-      CHECK(rule_mismatches(prepared->scene) == 0);
-      const std::vector<int> counts = coverage_counts(prepared->scene);
+      CHECK(rule_mismatches(*prepared) == 0);
+      const std::vector<int> counts = coverage_counts(*prepared);
       int total = 0, most = 0;
       for (const int c : counts) {
         total += c;
@@ -401,10 +383,10 @@ TEST_CASE("huge coordinates: a jittered floor grid and a fan 2e4 units across ar
     }
     snap_positions_to_q16(s);
     const auto prepared = pr::prepare_scene(s);
-    const std::vector<int> counts = coverage_counts(prepared->scene);
+    const std::vector<int> counts = coverage_counts(*prepared);
     int not_once = 0;
     for (const int c : counts) not_once += c != 1;
-    const OutlineCheck r = check_outline(s, prepared->scene);
+    const OutlineCheck r = check_outline(s, *prepared);
     INFO("variant " << variant << ": pixels not covered exactly once " << not_once << "; certain " << r.certain
                     << ", wrong " << r.wrong << ", largest margin " << r.largest_margin << " px");
     CHECK(not_once == 0);

@@ -1,5 +1,6 @@
-// libFuzzer harness: triangle setup, the row walk and the span walk on
-// arbitrary vertex data within the documented input ranges.
+// libFuzzer harness: triangle setup (the general int64 one and the small
+// triangles' 32-bit one), the row walk and the span walk on arbitrary vertex
+// data within the documented input ranges.
 //
 // Two modes (first byte):
 //  screen  three ScreenVertex values as setup takes them: x, y within the
@@ -17,11 +18,13 @@
 // Checked for every triangle:
 //  - rows come in order, once each, inside the viewport; spans have c0 <= c1
 //    inside the viewport;
-//  - walk_span calls the pixel kernel exactly for columns c0..c1, in order;
-//  - the stepped depth stays within 16 LSB of the exact depth at each pixel;
+//  - walk_span hands the kernel runs covering exactly columns c0..c1, in order;
+//  - the stepped depth stays within depth_drift_limit of the exact depth at each
+//    pixel and never beyond the depth format's z_limit;
 //  - the covered pixels are exactly float_model::covered_pixels' on the same
 //    snapped vertices (viewports up to 128x128; above that, each span's ends
-//    are covered by the rule and the pixels beside them are not).
+//    are covered by the rule and the pixels beside them are not), and where
+//    setup_small takes the triangle, its rows cover the very same pixels.
 // Any violation aborts (a libFuzzer crash).
 //  - every clipped vertex is in front of the eye and inside each plane it was
 //    clipped against, up to lerp's rounding.
@@ -36,7 +39,8 @@
 
 #include "float_model/raster.hpp"
 #include "float_model/setup.hpp"
-#include "spanlight/geometry.hpp"
+#include "spanlight/4_pixel/depth.hpp"
+#include "spanlight/5_frame/draw.hpp"
 
 namespace sl = spanlight;
 namespace fm = spanlight::float_model;
@@ -44,7 +48,7 @@ namespace fm = spanlight::float_model;
 namespace {
 
 constexpr int P = 1;
-using R = sl::TableReciprocal<8, 1>;
+constexpr sl::FixedDivide<8, 1> divide{};
 
 struct Bytes {
   const std::uint8_t* data;
@@ -68,6 +72,14 @@ struct Bytes {
 }
 
 constexpr std::int32_t guard_limit = (1 << 21) - 1;
+
+// How far the stepped depth may drift from the exact depth (Q0.32 units) `k` pixels after the
+// span's start, where both are exact: each exact depth is off the truth by 2 * 14 + 1 units
+// (lambda_1, lambda_2 within 3.5 * 2^-30 each, times |dz| <= 1, and the product's floor), and
+// k steps of dzdx by the floor (1.25 units a step: mul_shift_wide and num >> pre) and by 4/D's
+// relative error (reciprocal<8, 2> < 2^-28.9, d_norm's truncation 2^-31, the halving 2^-30)
+// over the depth they cover (< 2^32 units): 2^32 * 2^-28.2 < 15 units.
+constexpr std::int64_t depth_drift_limit(std::int64_t k) { return 2 * 29 + 1 + (5 * k + 3) / 4 + 15; }
 constexpr std::int64_t clip_limit = (3 * (std::int64_t{1} << 27) + (1 << 13)) * (std::int64_t{1} << 32);  // units * 2^32
 
 void check_triangle(const sl::ScreenVertex (&v)[3], const sl::ClipVertex<P>* const (&clip)[3], sl::Cull cull, int width,
@@ -78,20 +90,25 @@ void check_triangle(const sl::ScreenVertex (&v)[3], const sl::ClipVertex<P>* con
   const fm::SnappedVertex tri[3] = {{v[0].x, v[0].y}, {v[1].x, v[1].y}, {v[2].x, v[2].y}};
   const bool full_check = width <= 128 && height <= 128;
   std::vector<std::uint8_t> emitted(full_check ? static_cast<std::size_t>(width * height) : 0, 0);
-  if (sl::setup_triangle(v, cull, width, height, t)) {
+  const sl::DepthFormat<> depth(24);
+  if (sl::setup_triangle(v, cull, height, t)) {
     sl::TriangleAttributes<P> a{};
-    const sl::ClipVertex<P>* ordered[3] = {clip[t.order[0]], clip[t.order[1]], clip[t.order[2]]};
-    a.u0 = ordered[0]->u;
-    a.du1 = ordered[1]->u - a.u0;
-    a.du2 = ordered[2]->u - a.u0;
-    a.v0 = ordered[0]->v;
-    a.dv1 = ordered[1]->v - a.v0;
-    a.dv2 = ordered[2]->v - a.v0;
-    sl::normalise_projector<P>(ordered, 0, a);
-    const std::uint16_t texels[1] = {static_cast<std::uint16_t>(in.in(1, 4096, 16))};
-    const sl::SpanControl control{static_cast<int>(in.in(0, 6, 8)), static_cast<int>(in.in(0, 10, 8)),
-                                  static_cast<int>(in.in(0, 16, 8)), texels};
-    const sl::SpanNeeds needs{true, 0, 1};
+    const sl::ClipVertex<P>* const ordered[3] = {clip[t.order[0]], clip[t.order[1]], clip[t.order[2]]};
+    sl::set_uv<P>(ordered, a);
+    sl::set_projector<P>(ordered, 0, a);
+    const auto image = static_cast<std::uint16_t>(in.in(1, 4096, 16));
+    const std::uint16_t texels[1] = {image};
+    // Q3.28 units per texel of the larger side, as draw_pass works it out (which takes clz32(0) for a
+    // one-texel image: undefined; here 0 bits of size).
+    const int size_bits = image > 1 ? 32 - fixedpoint::clz32(image - 1u) : 0;
+    const std::uint8_t texel_bits[1] = {static_cast<std::uint8_t>(sl::proj_frac_bits - size_bits)};
+    // uv in texels * 2^frac (8..16), stepped as a clamped texture's (shift 0) or a repeating one's (shifted up).
+    const int frac = static_cast<int>(in.in(8, 16, 8));
+    const auto up = static_cast<std::uint8_t>(in.in(0, 24 - frac, 8));
+    const sl::StepScale uv_scale{{0, 0, 0}, {up, up, 0}, static_cast<std::uint8_t>(frac + up)};
+    const sl::SpanControl control{static_cast<int>(in.in(0, 6, 8)), static_cast<int>(in.in(0, 10, 8)), &uv_scale, frac,
+                                  texels, texel_bits, depth.z_limit};
+    const sl::SpanNeeds needs{true, uv_scale, 0, 1};
     // walk_span on at most 4 rows spread over the triangle (it is the slow part).
     const std::int32_t rows = t.row_end - t.row_begin, stride = rows > 4 ? rows / 4 : 1;
     std::int32_t last_row = -1;
@@ -102,13 +119,17 @@ void check_triangle(const sl::ScreenVertex (&v)[3], const sl::ClipVertex<P>* con
       const bool walk = (row - t.row_begin) % stride == 0 || row + 1 == t.row_end;
       if (walk) {
         std::int32_t expect = c0;
-        sl::walk_span<P, R>(t, a, needs, control, c0, c1, [&](std::int32_t column, const sl::PointValues<P>& values) {
-          if (column != expect++) fail("walk_span skipped or repeated a column");
-          if (!t.depth_per_pixel) {
-            const std::int32_t exact = sl::mix3(t.z0, t.dz1, t.dz2, sl::barycentric(t, t.edge[1].value_at(column)),
-                                                sl::barycentric(t, t.edge[2].value_at(column)));
-            const std::int64_t drift = std::int64_t{values.z} - exact;
-            if (drift > 16 || drift < -16) fail("stepped depth drifted from the exact depth");
+        sl::walk_span<P, true, true>(t, a, needs, control, divide, c0, c1,
+                                     [&](std::int32_t column, std::int32_t count, const sl::PixelRun<P>& run) {
+          if (column != expect || count < 1) fail("walk_span skipped or repeated a column");
+          expect += count;
+          std::uint32_t z = run.z;
+          for (std::int32_t k = 0; k < count; ++k, z += static_cast<std::uint32_t>(run.dz)) {
+            if (z > depth.z_limit) fail("stepped depth beyond z_limit: it would store the clear value");
+            const std::int32_t c = column + k;
+            const std::uint32_t exact = sl::depth_q32(t, sl::screen_weights(t, t.edge[1].value_at(c), t.edge[2].value_at(c)));
+            const std::int64_t drift = std::int64_t{z} - std::int64_t{exact > depth.z_limit ? depth.z_limit : exact};
+            if (drift > depth_drift_limit(c - c0) || drift < -depth_drift_limit(c - c0)) fail("stepped depth drifted from the exact depth");
           }
         });
         if (expect != c1 + 1) fail("walk_span stopped early");
@@ -123,12 +144,30 @@ void check_triangle(const sl::ScreenVertex (&v)[3], const sl::ClipVertex<P>* con
       }
     });
   }
+  // The small-triangle setup, where it takes the triangle, covers the same pixels.
+  sl::SmallTriangle small{};
+  bool small_covers = false;
+  const bool is_small = sl::setup_small(v, cull, height, small, small_covers);
+  std::vector<std::uint8_t> emitted_small(emitted.size(), 0);
+  if (is_small && small_covers) {
+    for (std::int32_t row = small.row_begin; row < small.row_end; ++row) {
+      std::int32_t lo = -small.column0, hi = width - 1 - small.column0;
+      if (small.columns(lo, hi)) {
+        if (row < 0 || row >= height || small.column0 + lo < 0 || small.column0 + hi >= width)
+          fail("small triangle span outside the viewport");
+        if (full_check)
+          for (std::int32_t c = lo; c <= hi; ++c) emitted_small[static_cast<std::size_t>(row * width + small.column0 + c)] = 1;
+      }
+      small.next_row();
+    }
+  }
   if (!full_check) return;
   // The reference: float_model's rule, with float_model's `back` culling (zero area counts as culled).
   std::vector<std::uint8_t> reference(emitted.size(), 0);
   if (!(cull == sl::Cull::back && fm::is_back_facing({tri[0], tri[1], tri[2]})))
     for (const auto& [x, y] : fm::covered_pixels(tri, width, height)) reference[static_cast<std::size_t>(y * width + x)] = 1;
   if (emitted != reference) fail("covered pixels differ from float_model::covered_pixels");
+  if (is_small && emitted_small != reference) fail("the small-triangle setup covers other pixels than the rule");
 }
 
 }  // namespace

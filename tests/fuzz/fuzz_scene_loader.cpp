@@ -28,7 +28,6 @@
 #include "prepare/prepare.hpp"
 #include "prepare/render_fixed.hpp"
 #include "scene/scene.hpp"
-#include "spanlight/geometry.hpp"
 
 namespace fs = std::filesystem;
 namespace sl = spanlight;
@@ -87,7 +86,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   if (!small_enough(scene)) return 0;
-  const sl::prepare::FixedFrame fixed = sl::prepare::render_fixed(*prepared, sl::prepare::FixedOptions{});
+  const sl::prepare::FixedFrame fixed = sl::prepare::render_fixed(*prepared, sl::Knobs{});
   try {
     const sl::float_model::FloatFrame ref = sl::float_model::render_float(scene);
     if (ref.width != fixed.width || ref.height != fixed.height || ref.rgb.size() != fixed.rgb.size()) std::abort();

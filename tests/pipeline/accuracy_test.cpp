@@ -16,19 +16,19 @@ namespace cmp = spanlight::compare;
 
 namespace {
 
-struct Knobs {
+struct Setting {
   int span_log2;
   int table_bits;
   int newton_steps;
 };
 
 cmp::CompareResult fixed_vs_float(const spanlight::prepare::PreparedStorage& prepared,
-                                  const spanlight::float_model::FloatFrame& reference, Knobs knobs) {
-  spanlight::prepare::FixedOptions options;  // rgb888, 24-bit depth, multipass
-  options.table_bits = knobs.table_bits;
-  options.newton_steps = knobs.newton_steps;
-  options.precision.span_log2 = static_cast<std::uint8_t>(knobs.span_log2);
-  const auto fixed = spanlight::prepare::render_fixed(prepared, options);
+                                  const spanlight::float_model::FloatFrame& reference, Setting setting) {
+  spanlight::Knobs knobs;  // rgb888, 24-bit depth, the default tolerance
+  knobs.table_bits = static_cast<std::uint8_t>(setting.table_bits);
+  knobs.newton = static_cast<std::uint8_t>(setting.newton_steps);
+  knobs.span_log2 = static_cast<std::uint8_t>(setting.span_log2);
+  const auto fixed = spanlight::prepare::render_fixed(prepared, knobs);
   return cmp::compare_images(cmp::Rgb8View{fixed.width, fixed.height, fixed.rgb},
                              cmp::Rgb8View{reference.width, reference.height, reference.rgb});
 }
@@ -52,12 +52,15 @@ TEST_CASE("default settings meet the acceptance figures on every shared scene, a
     const auto prepared = spanlight::prepare::prepare_scene(loaded);
     const auto reference = spanlight::float_model::render_float(loaded);
 
-    const Knobs defaults{spanlight::Precision{}.span_log2, spanlight::prepare::FixedOptions{}.table_bits,
-                         spanlight::prepare::FixedOptions{}.newton_steps};
-    REQUIRE(defaults.span_log2 == 4);  // span 16 is what "default" means below
+    const spanlight::Knobs knobs{};
+    const Setting defaults{knobs.span_log2, knobs.table_bits, knobs.newton};
+    REQUIRE(defaults.span_log2 == 6);  // span 64, tolerance 2^-5, table 8, newton 1 is what "default" means below
+    REQUIRE(knobs.tolerance_log2 == 5);
+    REQUIRE(defaults.table_bits == 8);
+    REQUIRE(defaults.newton_steps == 1);
     const cmp::CompareResult at_default = fixed_vs_float(*prepared, reference, defaults);
-    const cmp::CompareResult at_best = fixed_vs_float(*prepared, reference, Knobs{0, 12, 1});
-    const std::string line_default = describe(name, "span 16, table 8, newton 1", at_default);
+    const cmp::CompareResult at_best = fixed_vs_float(*prepared, reference, Setting{0, 12, 1});
+    const std::string line_default = describe(name, "span 64, table 8, newton 1", at_default);
     const std::string line_best = describe(name, "span 1, table 12, newton 1", at_best);
     std::printf("%s\n%s\n", line_default.c_str(), line_best.c_str());
     INFO(line_default);
@@ -78,8 +81,8 @@ TEST_CASE("a 6-bit reciprocal table without Newton steps is less accurate than 1
   const auto loaded = spanlight::scene::load_scene(pt::scene_file(name));
   const auto prepared = spanlight::prepare::prepare_scene(loaded);
   const auto reference = spanlight::float_model::render_float(loaded);
-  const cmp::CompareResult coarse = fixed_vs_float(*prepared, reference, Knobs{0, 6, 0});
-  const cmp::CompareResult fine = fixed_vs_float(*prepared, reference, Knobs{0, 12, 1});
+  const cmp::CompareResult coarse = fixed_vs_float(*prepared, reference, Setting{0, 6, 0});
+  const cmp::CompareResult fine = fixed_vs_float(*prepared, reference, Setting{0, 12, 1});
   const std::string line_coarse = describe(name, "span 1, table 6, newton 0", coarse);
   const std::string line_fine = describe(name, "span 1, table 12, newton 1", fine);
   std::printf("%s\n%s\n", line_coarse.c_str(), line_fine.c_str());

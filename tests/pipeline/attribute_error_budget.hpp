@@ -1,7 +1,7 @@
 // The fixed pipeline's error budget for the values the span walk hands a
 // pixel (depth, uv, each projector's s/q and t/q), derived from the formats and
-// divides of project.hpp, setup.hpp, perspective.hpp and span.hpp, as bounds a
-// test can hold every pixel to.
+// divides of 1_vertex/project.hpp, 2_triangle/setup.hpp, 3_span/exact.hpp,
+// segments.hpp and walk.hpp, as bounds a test can hold every pixel to.
 //
 // Against what: the float model's perspective-correct values at the same pixel
 // centre, on the pipeline's own snapped vertices and the very inputs prepare
@@ -13,9 +13,11 @@
 //   - Q0.30 screen barycentrics, the Q0.30 perspective weights and their divide
 //     (the table/Newton knob), mix3's floor;
 //   - per projector one more divide, by q, and the shift that brings (s,t,r,q) below 2^30;
-//   - between exact points, linear stepping (the span tolerance) and the steps' floors.
+//   - inside a span, RowInterpolation points from its two exact ends, and between them
+//     quadratic steps (the segment bound 2^-T and the steps' rounding);
+//   - depth: exact at a span's first pixel, then dz/dx (Q0.32) per pixel.
 // Units: "lsb" is 2^-30 (Q0.30 weights and depth); "texel" is a texel of the
-// image the value indexes (for a projector, of its image's larger side, as span.hpp counts).
+// image the value indexes (for a projector, of its image's larger side, as walk.hpp counts).
 #pragma once
 
 #include <algorithm>
@@ -103,7 +105,7 @@ inline double uv_exact(const double (&u)[3], double u_value, const Weights& w, i
 }
 
 // One projector at an exact point, for s/q (t/q alike), in the reference's units; `unit` =
-// 2^(shift - 32) is the value of one unit after normalise_projector()'s shift. Each vertex value is
+// 2^(shift - 32) is the value of one unit after set_projector() (2_triangle/attributes.hpp)'s shift. Each vertex value is
 // off by < 1.5 units (the shift's floor, the Q31.32 rounding), weighted by sum |b_i| <= 1 + 4 beta,
 // and mix3 floors once more:
 //   |s~ - s| <= weighted_value_error(s) + (1.5 (1 + 4 beta) + 1) unit, and the same for q.
@@ -136,22 +138,24 @@ inline double projector_exact(const ProjectorPoint& p, const Weights& w) {
   return std::max(one(p.s, p.s_value), one(p.t, p.t_value));
 }
 
-// Window depth, in lsb, at any span setting.
+// Window depth in Q0.32 units (2^-32), at a pixel `steps` pixels after its span's first.
 //  Vertex (project()): (z + w) / w with both >> k (w >> k >= 2^27) is off by < 2 / (2^27 - 1),
 //  the reciprocal<8, 2> by 2 eps (the ratio is <= 2), the product's floor 2^-32, and the clip
-//  transform's rounding of z and w by 2 / (w_min 2^32); halved to Q1.30, plus half an lsb.
-//  Pixel: mix3 with lambda_1, lambda_2 (3.5 lsb each, times |dz| <= 1) and its floor (1 lsb);
-//  then dz/dx per pixel: the gradient's reciprocal (area_rcp's floors and >> 2, < 1.75 * 2^-29
-//  relative) over at most the triangle's depth range (2^30 lsb), the per-pixel gradient's
-//  floor (2^-32 lsb a pixel, 2^12 pixels at most) and the final rounding (1/2 lsb).
-inline double depth_lsb(double w_min) {
+//  transform's rounding of z and w by 2 / (w_min 2^32); halved to Q1.30, plus half an lsb (2^-30),
+//  times 4 in Q0.32.
+//  Span start (depth_q32): lambda_1, lambda_2 (3.5 lsb each, times |dz| <= 1: 14 units each) and
+//  the product's floor (1 unit).
+//  Steps (setup_triangle's dzdx, Q0.32 a pixel): the floor of mul_shift_wide and what num >> pre
+//  drops (< 1 + 1/4 unit a pixel), and the relative error of 4/D (area_rcp's reciprocal<8, 2>,
+//  d_norm's truncation 2^-31, the halving's floor 2^-30) over the depth the steps cover (< 2^32 units).
+inline double depth_units(double w_min, int steps) {
   const double ratio = 2.0 / (0x1p27 - 1.0) + 2.0 * reciprocal_relative(8, 2) + 0x1p-32 + 2.0 / (w_min * 0x1p32);
-  const double vertex = ratio / 2.0 / lsb + 0.5;
-  return vertex + 2.0 * 3.5 + 1.0 + 1.75 * 0x1p-29 * 0x1p30 + 0x1p12 * 0x1p-32 + 0.5;
+  const double vertex = 4.0 * (ratio / 2.0 / lsb + 0.5);
+  return vertex + 2.0 * 14.0 + 1.0 + 1.25 * steps + 0x1p32 * (reciprocal_relative(8, 2) + 0x1p-31 + 0x1p-30);
 }
 
 // A subdivision point inside a span whose two ends are exact points and fill it
-// (perspective.hpp, RowInterpolation: q > 0 at both ends and no value clamped):
+// (3_span/exact.hpp, RowInterpolation: q > 0 at both ends and no value clamped):
 // f~ = f_a~ + (f_b~ - f_a~) gamma~ with gamma~ from the ends' divisors. Against the truth
 // f = f_a + (f_b - f_a) gamma:
 //   f~ - f = (f_a~ - f_a)(1 - gamma~) + (f_b~ - f_b) gamma~ + (f_b - f_a)(gamma~ - gamma) + floor,
@@ -169,21 +173,29 @@ inline double row_interpolated(double end_a, double end_b, double delta, double 
   return std::max(end_a, end_b) * (1.0 + 2.0 * eps_reciprocal) + (delta + end_a + end_b) * eps_gamma + unit;
 }
 
-// Between exact points (span.hpp). A segment's values are the linear interpolation of its two
-// exact end values (each within E of the truth), plus at most one unit of the value's format per
-// step (step_of()'s floor; 2^span_log2 steps at most). The true curve v = (a + b x) / (c + d x) is
-// within |dv| |dD| / (4 min D) of its chord (D the screen-linear divisor; exact, not first order).
-// linear_headroom() admits a segment when n |dD~| <= 2^(8 - tol) 4 min D~, n = floor(256 |dv~|) on
-// the fixed values and divisors D~; with D~ within a relative rho of the truth (rho <= 1/3),
-// |dv| <= (n + 1) / 256 + 4E, and the gap is also never more than |dv|. Both cases give
-//   gap <= 2^-tol (1 + 3 rho) + 2^-8 + 4E + rho |dv|,
-// so a stepped value is within 5E + 2^-tol (1 + 3 rho) + 2^-8 + rho |dv| + 2^span_log2 units.
-// E, rho and |dv| are taken as their largest over the pixels of the row (the segment's ends lie
-// there); rho also holds linear_headroom()'s shift of D below 2^31 (< 2^-30 D_max / D_min).
-inline double stepped(double row_exact, double row_rho, double row_range, int tolerance_log2, int span_log2,
-                      double unit) {
-  return 5.0 * row_exact + std::ldexp(1.0, -tolerance_log2) * (1.0 + 3.0 * row_rho) + 0x1p-8 + row_rho * row_range +
-         std::ldexp(unit, span_log2);
+// A pixel inside a span whose ends are exact points and which the walk interpolates
+// (walk.hpp: q > 0 at both ends, no value clamped). Let f be the true curve, f~ the 1-D
+// perspective interpolation of the fixed ends with RowInterpolation's divisors, and Q the
+// quadratic a segment steps (segments.hpp) through its start, middle and end, which are
+// RowInterpolation points (or the span's exact ends). Then at a pixel
+//   stepped - f = (stepped - Q~) + (Q~ - Q[f~]) + (Q[f~] - f~) + (f~ - f):
+//   - the rounded steps drift at most 2^(2k-1) step units over 2^k pixels, which the planner's
+//     rounding cap keeps within 2^-(T+1) texel;
+//   - each node is f~ up to RowInterpolation's own rounding, |F~| (eps_R + 2^-29) + 1 unit
+//     (exact.hpp), and the quadratic through three equally spaced nodes moves at most 1.25
+//     times its nodes' errors (the Lebesgue constant of the three points on their interval);
+//   - SegmentPlanner keeps the quadratic through f~'s own values within 2^-T texel of f~
+//     (segments.hpp, bound (1));
+//   - |f~ - f| <= row_interpolated() (which bounds the RowInterpolation point itself, so also
+//     the exact curve through the fixed ends).
+// At span 1 (stepping false) every pixel is a RowInterpolation point: row_interpolated() alone.
+// Values in texels; `unit` the exact value's unit in texels; `delta` >= |f_b~ - f_a~|.
+inline double interpolated_span(double end_a, double end_b, double delta, double d_a, double d_b, double eps_reciprocal,
+                                double unit, bool stepping, int tolerance_log2) {
+  const double points = row_interpolated(end_a, end_b, delta, d_a, d_b, eps_reciprocal, unit);
+  if (!stepping) return points;
+  const double node = delta * (eps_reciprocal + 0x1p-29) + unit;
+  return points + 1.25 * node + std::ldexp(1.0, -tolerance_log2) + std::ldexp(1.0, -(tolerance_log2 + 1));
 }
 
 }  // namespace spanlight::ptest::budget

@@ -5,7 +5,8 @@
 // project, setup, rows); a counting kernel with no depth test sees every
 // covered pixel, so a pixel two triangles both cover shows up as a 2.
 // (c): setup_triangle + rasterize_rows on random snapped triangles give the
-// pixel set float_model::pixel_covered defines, pixel for pixel.
+// pixel set float_model::pixel_covered defines, pixel for pixel, and so does
+// the small-triangle setup (setup_small) wherever it takes a triangle.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -62,11 +63,14 @@ fm::SnappedVertex snapped(const ScreenVertex& v) { return {v.x, v.y}; }
 
 // Per-pixel count of how many of the object's triangles float_model's rule
 // says cover the pixel, on the pipeline's own snapped vertices.
-std::vector<int> reference_counts(const spanlight::PreparedScene& scene, const spanlight::ObjectData& object) {
+std::vector<int> reference_counts(const spanlight::prepare::PreparedStorage& prepared, std::uint16_t o) {
+  const spanlight::PreparedScene& scene = prepared.scene;
+  const spanlight::ObjectData& object = scene.objects[o];
   std::vector<int> counts(std::size_t{scene.width} * scene.height, 0);
   for (std::uint32_t tri = 0; tri < object.triangle_count; ++tri) {
     fm::SnappedVertex v[3];
-    for (std::uint32_t k = 0; k < 3; ++k) v[k] = snapped(pt::pipeline_screen_vertex(scene, object, object.indices[tri * 3 + k]));
+    for (std::uint32_t k = 0; k < 3; ++k)
+      v[k] = snapped(pt::eye_screen_vertex(scene, prepared.matrices, o, object.indices[tri * 3 + k]));
     for (const auto& [x, y] : fm::covered_pixels(v, scene.width, scene.height))
       ++counts[static_cast<std::size_t>(y * scene.width + x)];
   }
@@ -97,13 +101,22 @@ void check_watertight(const spanlight::scene::Scene& s, const std::vector<glm::d
   const double outline_margin_px = 2.0 * tolerance;
   const auto prepared = spanlight::prepare::prepare_scene(s);
   const spanlight::PreparedScene& scene = prepared->scene;
-  const std::vector<int> counts = pt::eye_coverage_counts(scene);
-  const std::vector<int> reference = reference_counts(scene, scene.objects[0]);
+  bool outside = false;
+  const std::vector<int> counts = pt::eye_coverage_counts(scene, prepared->matrices, &outside);
+  const std::vector<int> reference = reference_counts(*prepared, 0);
+  CHECK_FALSE(outside);
+  // The same scene without its projector lets the eye pass take the small-triangle
+  // path (draw.hpp: small_path_allowed): its 32-bit edges must cover the same pixels.
+  spanlight::PreparedScene no_projector = scene;
+  no_projector.projector_count = 0;
+  const std::vector<int> small_counts = pt::eye_coverage_counts(no_projector, prepared->matrices, &outside);
+  CHECK_FALSE(outside);
+  CHECK(small_counts == reference);
 
   // The snapped vertices are where the exact projection puts them (this is
   // what makes the outline margin above valid).
   for (std::uint32_t i = 0; i < s.objects[0].mesh.positions.size(); ++i) {
-    const ScreenVertex v = pt::pipeline_screen_vertex(scene, scene.objects[0], i);
+    const ScreenVertex v = pt::eye_screen_vertex(scene, prepared->matrices, 0, i);
     const glm::dvec2 exact = exact_window(s, s.objects[0].mesh.positions[i]);
     REQUIRE(std::fabs(v.x / 256.0 - exact.x) <= tolerance);
     REQUIRE(std::fabs(v.y / 256.0 - exact.y) <= tolerance);
@@ -131,13 +144,12 @@ void check_watertight(const spanlight::scene::Scene& s, const std::vector<glm::d
   CHECK(mismatches == 0);
 
   // Multipass with one projector that covers everything: the light pass.
-  spanlight::Precision precision{};
-  precision.fused = false;
-  const pt::ObservedFrame frame = pt::render_observed(scene, precision);
+  const spanlight::Knobs knobs = pt::knobs_with(spanlight::Passes::multipass);
+  const pt::ObservedFrame frame = pt::render_observed(*prepared, knobs);
   std::vector<int> light_touches(counts.size(), 0);
-  for (const auto& [pass, index] : frame.log.events)
-    if (pass == spanlight::pass_light) ++light_touches[static_cast<std::size_t>(index)];
-  const std::uint32_t clear = spanlight::depth_clear(precision.depth_bits);
+  for (const pt::PassEvent& e : frame.log.events)
+    if (e.pass == spanlight::Pass::light) ++light_touches[e.index];
+  const std::uint32_t clear = spanlight::depth_clear(knobs.depth_bits);
   int wrong_touches = 0, wrong_colour = 0, visible = 0;
   for (std::size_t i = 0; i < counts.size(); ++i) {
     const bool is_visible = frame.depth[i] != clear;
@@ -258,13 +270,32 @@ using PixelSet = std::set<std::pair<int, int>>;
 PixelSet fixed_pixels(const ScreenVertex (&v)[3], Cull cull, int width, int height, bool& well_formed) {
   PixelSet out;
   spanlight::TriangleSetup t{};
-  if (!spanlight::setup_triangle(v, cull, width, height, t)) return out;
+  if (!spanlight::setup_triangle(v, cull, height, t)) return out;
   std::int32_t last_row = -1;
   spanlight::rasterize_rows(t, width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
     if (row <= last_row || row < 0 || row >= height || c0 < 0 || c1 >= width || c0 > c1) well_formed = false;
     last_row = row;
     for (std::int32_t c = c0; c <= c1; ++c) out.emplace(c, row);
   });
+  return out;
+}
+
+// The pixels the small-triangle setup (2_triangle/small.hpp) gives, as draw_small
+// walks them; `small` false when setup_small passes the triangle to the general path.
+PixelSet small_pixels(const ScreenVertex (&v)[3], Cull cull, int width, int height, bool& small, bool& well_formed) {
+  PixelSet out;
+  spanlight::SmallTriangle t{};
+  bool covers = false;
+  small = spanlight::setup_small(v, cull, height, t, covers);
+  if (!small || !covers) return out;
+  for (std::int32_t row = t.row_begin; row < t.row_end; ++row) {
+    std::int32_t lo = -t.column0, hi = width - 1 - t.column0;
+    if (t.columns(lo, hi)) {
+      if (row < 0 || row >= height) well_formed = false;
+      for (std::int32_t c = lo; c <= hi; ++c) out.emplace(t.column0 + c, row);
+    }
+    t.next_row();
+  }
   return out;
 }
 
@@ -310,7 +341,7 @@ TEST_CASE("setup and row walk cover exactly the pixels float_model::pixel_covere
   };
   auto clamp_limit = [&](std::int64_t c) { return static_cast<std::int32_t>(std::clamp<std::int64_t>(c, -limit, limit)); };
 
-  int non_empty = 0, degenerate = 0, mismatched = 0;
+  int non_empty = 0, degenerate = 0, mismatched = 0, small_cases = 0, small_mismatched = 0;
   bool well_formed = true;
   for (int n = 0; n < cases; ++n) {
     ScreenVertex v[3] = {vertex(coordinate(width), coordinate(height)), vertex(coordinate(width), coordinate(height)),
@@ -348,9 +379,19 @@ TEST_CASE("setup and row walk cover exactly the pixels float_model::pixel_covere
         }
       }
       if (zero_area) CHECK(got.empty());
+      bool small = false;
+      const PixelSet got_small = small_pixels(v, cull, width, height, small, ok);
+      well_formed &= ok;
+      if (small) {
+        ++small_cases;
+        small_mismatched += got_small != want;
+      }
     }
   }
-  INFO(cases << " triangles, " << degenerate << " of zero area, " << non_empty << " non-empty (triangle, cull) cases");
+  INFO(cases << " triangles, " << degenerate << " of zero area, " << non_empty << " non-empty (triangle, cull) cases, "
+             << small_cases << " taken by the small-triangle setup");
+  CHECK(small_cases > cases / 10);
+  CHECK(small_mismatched == 0);
   CHECK(non_empty > cases / 4);  // enough of them actually touch the viewport
   CHECK(degenerate > cases / 20);
   CHECK(well_formed);

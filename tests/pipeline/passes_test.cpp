@@ -24,13 +24,7 @@ struct PassCheck {
   bool light_events_count_ok = true;
 };
 
-// Splits the observer's log by pass. The light passes run one after the
-// other in projector order (render.hpp) and the observer cannot tell them
-// apart, so pass j is taken as events [j V, (j + 1) V) of the light events,
-// V the visible count: if every pass touches each visible pixel exactly once
-// the split is exact, and any pass that misses or repeats a pixel either
-// changes the total or leaves some chunk that is not a permutation of the
-// visible set.
+// Splits the log by pass; each light pass's events carry its projector (Hooks::pass_begin).
 PassCheck check_passes(const pt::ObservedFrame& frame, int projectors, int depth_bits) {
   const std::size_t pixels = frame.depth.size();
   const std::uint32_t clear = spanlight::depth_clear(depth_bits);
@@ -41,31 +35,35 @@ PassCheck check_passes(const pt::ObservedFrame& frame, int projectors, int depth
     out.visible += visible[i];
   }
   std::vector<int> depth_touches(pixels, 0), modulate_touches(pixels, 0);
-  std::vector<std::int32_t> light_events;
-  for (const auto& [pass, index] : frame.log.events) {
-    const auto i = static_cast<std::size_t>(index);
-    if (pass == spanlight::pass_depth_ambient) ++depth_touches[i];
-    if (pass == spanlight::pass_light) light_events.push_back(index);
-    if (pass == spanlight::pass_modulate) ++modulate_touches[i];
+  std::vector<std::vector<int>> light_touches(static_cast<std::size_t>(projectors), std::vector<int>(pixels, 0));
+  std::size_t light_events = 0;
+  for (const pt::PassEvent& e : frame.log.events) {
+    const auto i = static_cast<std::size_t>(e.index);
+    REQUIRE(i < pixels);
+    if (e.pass == spanlight::Pass::depth_ambient) ++depth_touches[i];
+    if (e.pass == spanlight::Pass::light) {
+      ++light_events;
+      REQUIRE(e.projector >= 0);
+      REQUIRE(e.projector < projectors);
+      ++light_touches[static_cast<std::size_t>(e.projector)][i];
+    }
+    if (e.pass == spanlight::Pass::modulate) ++modulate_touches[i];
   }
   for (std::size_t i = 0; i < pixels; ++i) {
     out.depth_pass_mismatches += (depth_touches[i] > 0) != (visible[i] != 0);
     out.modulate_mismatches += modulate_touches[i] != visible[i];
   }
-  out.light_events_count_ok = light_events.size() == out.visible * static_cast<std::size_t>(projectors);
-  for (int j = 0; j < projectors; ++j) {
-    std::vector<int> touches(pixels, 0);
-    const std::size_t begin = std::min(light_events.size(), out.visible * static_cast<std::size_t>(j));
-    const std::size_t end = std::min(light_events.size(), out.visible * static_cast<std::size_t>(j + 1));
-    for (std::size_t e = begin; e < end; ++e) ++touches[static_cast<std::size_t>(light_events[e])];
-    for (std::size_t i = 0; i < pixels; ++i) out.light_pass_mismatches += touches[i] != visible[i];
-  }
+  out.light_events_count_ok = light_events == out.visible * static_cast<std::size_t>(projectors);
+  for (int j = 0; j < projectors; ++j)
+    for (std::size_t i = 0; i < pixels; ++i)
+      out.light_pass_mismatches += light_touches[static_cast<std::size_t>(j)][i] != visible[i];
   return out;
 }
 
-void require_invariant(const spanlight::PreparedScene& scene, const spanlight::Precision& precision) {
-  const pt::ObservedFrame multipass = pt::render_observed(scene, precision);
-  const PassCheck check = check_passes(multipass, scene.projector_count, precision.depth_bits);
+void require_invariant(const spanlight::prepare::PreparedStorage& prepared, std::uint8_t depth_bits) {
+  const spanlight::PreparedScene& scene = prepared.scene;
+  const pt::ObservedFrame multipass = pt::render_observed(prepared, pt::knobs_with(spanlight::Passes::multipass, depth_bits));
+  const PassCheck check = check_passes(multipass, scene.projector_count, depth_bits);
   INFO("visible pixels " << check.visible << ", projectors " << int{scene.projector_count});
   CHECK(check.visible > 0);
   CHECK(check.depth_pass_mismatches == 0);
@@ -74,17 +72,19 @@ void require_invariant(const spanlight::PreparedScene& scene, const spanlight::P
   CHECK(check.modulate_mismatches == 0);
 
   // The fused pass resolves the same depth and touches the same pixels.
-  spanlight::Precision fused_precision = precision;
-  fused_precision.fused = true;
-  const pt::ObservedFrame fused = pt::render_observed(scene, fused_precision);
+  const pt::ObservedFrame fused = pt::render_observed(prepared, pt::knobs_with(spanlight::Passes::fused, depth_bits));
   CHECK(fused.depth == multipass.depth);
   std::vector<int> fused_touched(fused.depth.size(), 0);
-  for (const auto& [pass, index] : fused.log.events) {
-    CHECK(pass == spanlight::pass_fused);
-    fused_touched[static_cast<std::size_t>(index)] = 1;
+  int not_fused = 0;
+  for (const pt::PassEvent& e : fused.log.events) {
+    if (e.pass == spanlight::Pass::shadow_depth) continue;  // a shadow map's texel, not a pixel
+    not_fused += e.pass != spanlight::Pass::fused;
+    REQUIRE(e.index < fused_touched.size());
+    fused_touched[e.index] = 1;
   }
+  CHECK(not_fused == 0);
   int fused_mismatches = 0;
-  const std::uint32_t clear = spanlight::depth_clear(precision.depth_bits);
+  const std::uint32_t clear = spanlight::depth_clear(depth_bits);
   for (std::size_t i = 0; i < fused.depth.size(); ++i) fused_mismatches += fused_touched[i] != (multipass.depth[i] != clear);
   CHECK(fused_mismatches == 0);
 }
@@ -121,8 +121,7 @@ TEST_CASE("z-equal light and modulate passes touch exactly the visible pixels on
     INFO("scene " << name);
     const auto loaded = spanlight::scene::load_scene(pt::scene_file(name));
     const auto prepared = spanlight::prepare::prepare_scene(loaded);
-    spanlight::Precision precision{};
-    require_invariant(prepared->scene, precision);
+    require_invariant(*prepared, 24);
   }
 }
 
@@ -131,9 +130,7 @@ TEST_CASE("z-equal passes touch no pixel whose depth stayed cleared, for geometr
   const auto prepared = spanlight::prepare::prepare_scene(far_plane_scene());
   for (const std::uint8_t bits : {std::uint8_t{24}, std::uint8_t{16}}) {
     INFO("depth bits " << int{bits});
-    spanlight::Precision precision{};
-    precision.depth_bits = bits;
-    require_invariant(prepared->scene, precision);
+    require_invariant(*prepared, bits);
   }
 }
 
@@ -141,13 +138,8 @@ namespace {
 
 void require_fused_equals_multipass(const spanlight::prepare::PreparedStorage& prepared, PixelFormat format,
                                     std::uint8_t depth_bits) {
-  spanlight::prepare::FixedOptions options;
-  options.format = format;
-  options.precision.depth_bits = depth_bits;
-  options.precision.fused = false;
-  const auto multipass = spanlight::prepare::render_fixed(prepared, options);
-  options.precision.fused = true;
-  const auto fused = spanlight::prepare::render_fixed(prepared, options);
+  const auto multipass = spanlight::prepare::render_fixed(prepared, pt::knobs_with(spanlight::Passes::multipass, depth_bits, format));
+  const auto fused = spanlight::prepare::render_fixed(prepared, pt::knobs_with(spanlight::Passes::fused, depth_bits, format));
   std::size_t differing = 0;
   for (std::size_t i = 0; i < fused.raw.size(); ++i) differing += fused.raw[i] != multipass.raw[i];
   INFO("format " << spanlight::prepare::to_string(format) << ", depth bits " << int{depth_bits} << ": "

@@ -18,6 +18,7 @@
 #include "prepare/prepare.hpp"
 #include "prepare/render_fixed.hpp"
 #include "scene/scene.hpp"
+#include "eye_pass.hpp"
 #include "spanlight/render.hpp"
 
 // The sanitizer twin runs the same properties on fewer random cases.
@@ -136,19 +137,23 @@ inline bool hit_plane_y(const Ray& ray, double height, glm::dvec3& hit) {
   return true;
 }
 
-// ---- fixed-pipeline frames with a pass observer --------------------------------
+// ---- fixed-pipeline frames with a pass log --------------------------------------
 
-// Every touch of every pass, in order (passes.hpp: Observer::touched is static,
-// so the log it writes to is a global the test installs around one render).
+// Every touch of every pass, in order, with the projector of a light pass (else -1).
+struct PassEvent {
+  Pass pass;
+  int projector;
+  std::uint32_t index;
+};
 struct PassLog {
-  std::vector<std::pair<int, std::int32_t>> events;
+  std::vector<PassEvent> events;
 };
 
-struct RecordingObserver {
-  static inline PassLog* log = nullptr;
-  static void touched(int pass, std::int32_t index) {
-    if (log != nullptr) log->events.emplace_back(pass, index);
-  }
+struct RecordingHooks : NoHooks {
+  PassLog* log;
+  int projector = -1;
+  void pass_begin(Pass, int j) { projector = j; }
+  void touched(Pass pass, std::uint32_t index) { log->events.push_back({pass, projector, index}); }
 };
 
 struct ObservedFrame {
@@ -158,66 +163,25 @@ struct ObservedFrame {
   PassLog log;
 };
 
-// render_frame with the recording observer, buffers set up as render_fixed does.
-template <PixelFormat Format = PixelFormat::rgb888>
-ObservedFrame render_observed(const PreparedScene& scene, const Precision& precision) {
-  using F = HostFeatures<Format, 8, 1>;
-  using Color = ColorTraits<Format>;
-  const std::size_t pixels = std::size_t{scene.width} * scene.height;
-  std::vector<typename Color::Storage> color(pixels * Color::per_pixel);
+// render_frame with the recording hooks, buffers set up as render_fixed does.
+inline ObservedFrame render_observed(const prepare::PreparedStorage& prepared, const Knobs& knobs) {
   ObservedFrame frame;
-  frame.width = scene.width;
-  frame.height = scene.height;
-  frame.depth.resize(pixels);
-  std::vector<std::vector<std::uint32_t>> maps(scene.projector_count);
-  std::vector<std::uint32_t*> map_pointers(scene.projector_count, nullptr);
-  for (std::size_t j = 0; j < scene.projector_count; ++j) {
-    const ProjectorData& p = scene.projectors[j];
-    if (!p.shadows) continue;
-    maps[j].resize(std::size_t{p.map_size} * p.map_size);
-    map_pointers[j] = maps[j].data();
-  }
-  std::vector<std::uint8_t> tie_mask(tie_mask_bytes(scene.width, scene.height));
-  const FrameTarget<Format, std::uint32_t> target{color.data(), frame.depth.data(), map_pointers.data(),
-                                                  tie_mask.data()};
-  RecordingObserver::log = &frame.log;
-  const RenderStatus status = render_frame<F, std::uint32_t, RecordingObserver>(scene, target, precision);
-  RecordingObserver::log = nullptr;
-  if (status != RenderStatus::ok) throw std::runtime_error("render_frame refused the frame");
-  frame.rgb.resize(pixels * 3);
-  for (std::size_t i = 0; i < pixels; ++i) {
-    const Rgb8 c = Color::load(color.data() + i * Color::per_pixel);
-    frame.rgb[i * 3] = c.r;
-    frame.rgb[i * 3 + 1] = c.g;
-    frame.rgb[i * 3 + 2] = c.b;
-  }
+  RecordingHooks hooks{};
+  hooks.log = &frame.log;
+  const prepare::FixedFrame fixed = prepare::render_fixed_with_hooks(prepared, knobs, hooks);
+  frame.width = fixed.width;
+  frame.height = fixed.height;
+  frame.rgb = fixed.rgb;
+  frame.depth = fixed.depth;
   return frame;
 }
 
-// Counts every pixel() call of a draw: no depth test, so a pixel two
-// triangles both cover is counted twice.
-struct CountingKernel {
-  std::vector<int>* counts;
-  SpanNeeds needs() const { return {false, 0, 0}; }
-  void object(const ObjectData&) {}
-  template <typename V>
-  void pixel(std::int32_t i, const V&) {
-    ++(*counts)[static_cast<std::size_t>(i)];
-  }
-};
-
-// How many times the eye pass's geometry walk covers each pixel.
-inline std::vector<int> eye_coverage_counts(const PreparedScene& scene) {
-  using F = HostFeatures<PixelFormat::rgb888, 8, 1>;
-  std::vector<int> counts(std::size_t{scene.width} * scene.height, 0);
-  CountingKernel kernel{&counts};
-  draw_pass<F>(scene, PassView{scene.width, scene.height, -1}, Precision{}, kernel);
-  return counts;
-}
-
-// The snapped window position the pipeline gives a vertex of an object in the eye pass.
-inline ScreenVertex pipeline_screen_vertex(const PreparedScene& scene, const ObjectData& object, std::uint32_t index) {
-  return project(transform(object.clip_from_object, object.positions + index * 3), scene.width, scene.height);
+inline Knobs knobs_with(Passes passes, std::uint8_t depth_bits = 24, PixelFormat format = PixelFormat::rgb888) {
+  Knobs k;
+  k.passes = passes;
+  k.depth_bits = depth_bits;
+  k.format = format;
+  return k;
 }
 
 }  // namespace spanlight::ptest

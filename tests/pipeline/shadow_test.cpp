@@ -81,9 +81,8 @@ TEST_CASE("nearest shadow compare: the floor under the occluder is dark, the res
   const auto s = shadow_scene(sc::ShadowFilter::nearest);
   const auto prepared = spanlight::prepare::prepare_scene(s);
   for (const bool fused : {false, true}) {
-    spanlight::prepare::FixedOptions options;
-    options.precision.fused = fused;
-    const auto frame = spanlight::prepare::render_fixed(*prepared, options);
+    const spanlight::Knobs knobs = pt::knobs_with(fused ? spanlight::Passes::fused : spanlight::Passes::multipass);
+    const auto frame = spanlight::prepare::render_fixed(*prepared, knobs);
     int in_shadow = 0, in_light = 0, wrong_dark = 0, wrong_lit = 0, other = 0, worst_x = -1, worst_y = -1;
     double worst = 0.0;
     for (int y = 1; y + 1 < s.height; ++y) {
@@ -122,7 +121,7 @@ TEST_CASE("nearest shadow compare: the floor under the occluder is dark, the res
 TEST_CASE("pcf2x2 gives intermediate light only near the shadow's outline", "[shadow]") {
   const auto s = shadow_scene(sc::ShadowFilter::pcf2x2);
   const auto prepared = spanlight::prepare::prepare_scene(s);
-  const auto frame = spanlight::prepare::render_fixed(*prepared, spanlight::prepare::FixedOptions{});
+  const auto frame = spanlight::prepare::render_fixed(*prepared, spanlight::Knobs{});
   int in_shadow = 0, in_light = 0, wrong_dark = 0, wrong_lit = 0, mixed = 0, mixed_far = 0;
   for (int y = 1; y + 1 < s.height; ++y) {
     for (int x = 1; x + 1 < s.width; ++x) {

@@ -1,201 +1,240 @@
-// Span subdivision: between exact evaluations the pipeline steps uv and each
-// projector's s/q, t/q linearly, and span.hpp promises to shorten a segment
-// whenever linear stepping would drift more than 2^-span_tolerance_log2
-// texel from the perspective-correct value. Checked pixel by pixel against
-// the same walk at span 1, where every pixel is an exact evaluation.
+// The span stage's arithmetic on its own (3_span/segments.hpp) and the small
+// triangles' (2_triangle/small.hpp):
+// * SegmentPlanner's closed-form segment lengths keep the quadratic through a
+//   segment's exact start, middle and end within 2^-T texel of the true
+//   perspective curve at every pixel (the bound (1) of segments.hpp), in double;
+// * quadratic_steps' forward differences give that quadratic exactly when the
+//   scale has room, else within the stated 2^(2k-1) units over 2^k pixels;
+// * QuadraticRows walks the small triangle's quadratic exactly (mod 2^32);
+// * the small triangle's barycentric planes stay within their derived bound of
+//   the exact E_i / D at every pixel of the box.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <string>
-#include <vector>
+#include <random>
 
-#include "pipeline_support.hpp"
-
-namespace pt = spanlight::ptest;
-using spanlight::PointValues;
+#include "spanlight/2_triangle/small.hpp"
+#include "spanlight/3_span/segments.hpp"
 
 namespace {
 
-constexpr int P = 4;  // HostFeatures' projector count
-// A 12-bit table and two Newton steps: each reciprocal is good to about
-// 2^-29 relative (fixedpoint/reciprocal.hpp), so the exact evaluations the
-// walk starts from are as exact as the pipeline can make them.
-using F = spanlight::HostFeatures<spanlight::PixelFormat::rgb888, 12, 2>;
-
-struct Sample {
-  int object;
-  PointValues<P> values;
-};
-
-// Every covered pixel of the eye pass with uv (textured objects) and all projectors.
-struct ValueRecorder {
-  std::vector<Sample>* out;
-  const spanlight::PreparedScene* scene;
-  const spanlight::ObjectData* current = nullptr;
-  int object_index = -1;
-  spanlight::SpanNeeds needs() const { return {current->texture >= 0, 0, scene->projector_count}; }
-  void object(const spanlight::ObjectData& o) {
-    current = &o;
-    ++object_index;
-  }
-  template <typename V>
-  void pixel(std::int32_t, const V& v) {
-    out->push_back({object_index, v});
-  }
-};
-
-std::vector<Sample> walk(const spanlight::PreparedScene& scene, int span_log2) {
-  std::vector<Sample> out;
-  ValueRecorder recorder{&out, &scene};
-  spanlight::Precision precision{};
-  precision.span_log2 = static_cast<std::uint8_t>(span_log2);
-  spanlight::draw_pass<F>(scene, spanlight::PassView{scene.width, scene.height, -1}, precision, recorder);
-  return out;
-}
-
-// The bound, in texels of the image the values index:
-//   2^-3   what linear_headroom() allows (span_tolerance_log2 = 3); for
-//          v = (a + b x) / (c + d x) the gap between the curve and its chord
-//          is at most |dv| |dD| / (4 min D) exactly (D the screen-linear
-//          divisor), so this is a true bound, not a first-order estimate;
-//   2^-8   linear_headroom() sees the texel distance truncated to 1/256 texel;
-//   2^-8   the exact evaluations at both ends and at the pixel itself, each
-//          with two reciprocals good to 2^-29 relative and Q0.30 weights;
-//          step_of() truncates each step by < 2^-28, 64 steps at most.
-constexpr double bound_texels = 1.0 / 8.0 + 2.0 / 256.0;
-
-struct Worst {
-  double texels = 0.0;
-  std::size_t at = 0;
-  int checked = 0;
-};
-
-void check_stepping(const std::string& label, const spanlight::PreparedScene& scene, int span_log2) {
-  const std::vector<Sample> exact = walk(scene, 0);
-  const std::vector<Sample> stepped = walk(scene, span_log2);
-  REQUIRE(exact.size() == stepped.size());  // the same pixels in the same order
-
-  std::vector<Worst> worst_projector(scene.projector_count), worst_uv(scene.object_count);
-  constexpr double q28 = 268435456.0;
-  for (std::size_t i = 0; i < exact.size(); ++i) {
-    const PointValues<P>& e = exact[i].values;
-    const PointValues<P>& s = stepped[i].values;
-    const auto o = static_cast<std::size_t>(exact[i].object);
-    const spanlight::ObjectData& object = scene.objects[o];
-    if (object.texture >= 0) {
-      const double err = std::max(std::fabs(double(s.u) - e.u), std::fabs(double(s.v) - e.v)) /
-                         std::ldexp(1.0, object.uv_frac_bits);
-      ++worst_uv[o].checked;
-      if (err > worst_uv[o].texels) worst_uv[o] = {err, i, worst_uv[o].checked};
-    }
-    for (int j = 0; j < scene.projector_count; ++j) {
-      // Behind the projector the values are a fixed sentinel; at +-4 they are
-      // clamped (not the ratio any more): neither is a value to compare with.
-      if (!e.front[j] || std::abs(e.s[j]) >= spanlight::proj_limit || std::abs(e.t[j]) >= spanlight::proj_limit) continue;
-      const spanlight::TextureData& image = scene.textures[scene.projectors[j].texture];
-      const double texels = std::max(image.width, image.height);
-      const double err = std::max(std::fabs(double(s.s[j]) - e.s[j]), std::fabs(double(s.t[j]) - e.t[j])) / q28 * texels;
-      Worst& w = worst_projector[static_cast<std::size_t>(j)];
-      ++w.checked;
-      if (err > w.texels) w = {err, i, w.checked};
-    }
-  }
-  for (std::size_t o = 0; o < worst_uv.size(); ++o) {
-    if (worst_uv[o].checked == 0) continue;
-    INFO(label << " object " << o << ": worst uv drift " << worst_uv[o].texels << " texel over " << worst_uv[o].checked
-               << " pixels (bound " << bound_texels << ")");
-    CHECK(worst_uv[o].texels <= bound_texels);
-  }
-  for (std::size_t j = 0; j < worst_projector.size(); ++j) {
-    const Worst& w = worst_projector[j];
-    const PointValues<P>& e = exact[w.at].values;
-    const PointValues<P>& s = stepped[w.at].values;
-    INFO(label << " projector " << j << ": worst s/q, t/q drift " << w.texels << " texel over " << w.checked
-               << " pixels (bound " << bound_texels << "); there exact s/q " << e.s[j] / q28 << " t/q " << e.t[j] / q28
-               << ", stepped " << s.s[j] / q28 << ", " << s.t[j] / q28);
-    CHECK(w.checked > 0);
-    CHECK(w.texels <= bound_texels);
-  }
+// The true value along a span from a to b (exact ends f_a = 0, f_b = F texels):
+// f(x) = F gamma(x), gamma = (x - a) e_b / ((b - x) e_a + (x - a) e_b).
+double curve(double x, double a, double b, double e_a, double e_b, double F) {
+  const double den = (b - x) * e_a + (x - a) * e_b;
+  return F * (x - a) * e_b / den;
 }
 
 }  // namespace
 
-TEST_CASE("span stepping stays within the span tolerance of the exact values on every shared scene", "[span]") {
-  for (const char* name : pt::shared_scene_names()) {
-    const auto prepared = spanlight::prepare::prepare_scene(spanlight::scene::load_scene(pt::scene_file(name)));
-    check_stepping(name, prepared->scene, 4);
-  }
-}
-
-TEST_CASE("span stepping stays within the span tolerance where s/q leaves [-4, 4] inside a segment", "[span]") {
-  // Near the apex of pt::apex_floor_scene()'s lit wedge s/q changes by about
-  // one frustum width per pixel, so 16-pixel segments begin or end where s/q
-  // is clamped to +-4 while the frustum's side lies between them.
-  const auto prepared = spanlight::prepare::prepare_scene(pt::apex_floor_scene());
-  for (const int span_log2 : {2, 4, 6}) check_stepping("apex floor, span 2^" + std::to_string(span_log2), prepared->scene, span_log2);
-}
-
-TEST_CASE("a one-pixel span walks without planning a zero-length segment and gives the exact values there", "[span]") {
-  // Spans of one pixel (c0 == c1) happen at every triangle's tips. The walk
-  // must show the exact evaluation at that pixel; the sanitizer twin also
-  // checks the walk does nothing undefined on the way (no segment of length
-  // 0: step_of() would take clz(0)).
-  using R = F::reciprocal;
-  auto vertex = [](std::int32_t x, std::int32_t y, std::int32_t z, std::uint32_t mantissa, int exponent) {
-    spanlight::ScreenVertex v{};
-    v.x = x;
-    v.y = y;
-    v.z = z;
-    v.inv_w_mantissa = mantissa;
-    v.inv_w_exponent = exponent;
-    return v;
-  };
-  const spanlight::ScreenVertex v[3] = {vertex(10 * 256 + 17, 10 * 256 + 3, 1 << 28, 1u << 30, 33),
-                                        vertex(12 * 256 + 90, 40 * 256 + 41, 1 << 29, 3u << 29, 34),
-                                        vertex(30 * 256 + 5, 12 * 256 + 200, 3 << 28, 1u << 30, 32)};
-  spanlight::TriangleSetup setup{};
-  REQUIRE(spanlight::setup_triangle(v, spanlight::Cull::none, 64, 64, setup));
-  spanlight::TriangleAttributes<P> attrs{};
-  attrs.u0 = 3 << 16;
-  attrs.du1 = 40 << 16;
-  attrs.du2 = -(7 << 16);
-  attrs.v0 = 1 << 16;
-  attrs.dv1 = 5 << 16;
-  attrs.dv2 = 60 << 16;
-  const std::int32_t strq0[4] = {1 << 26, 1 << 26, 1 << 27, 1 << 28};
-  const std::int32_t strq1[4] = {3 << 26, -(1 << 25), 1 << 26, 1 << 27};
-  const std::int32_t strq2[4] = {-(1 << 26), 5 << 25, 1 << 25, 1 << 26};
-  for (int k = 0; k < 4; ++k) {
-    attrs.proj0[0][k] = strq0[k];
-    attrs.proj_d1[0][k] = strq1[k];
-    attrs.proj_d2[0][k] = strq2[k];
-  }
-  const std::uint16_t texels[P] = {256, 0, 0, 0};
-  const spanlight::SpanControl control{4, 3, 16, texels};
-  const spanlight::SpanNeeds needs{true, 0, 1};
-  int pixels = 0;
-  spanlight::rasterize_rows(setup, 64, [&](std::int32_t, std::int32_t c0, std::int32_t c1) {
-    for (std::int32_t column = c0; column <= c1; ++column) {  // each pixel as a span of its own
-      const std::int64_t e1 = setup.edge[1].value_at(column), e2 = setup.edge[2].value_at(column);
-      const spanlight::GroupPoint uv = spanlight::evaluate_group<P, R>(setup, attrs, spanlight::uv_group, e1, e2);
-      const spanlight::GroupPoint st = spanlight::evaluate_group<P, R>(setup, attrs, 0, e1, e2);
-      int calls = 0;
-      spanlight::walk_span<P, R>(setup, attrs, needs, control, column, column,
-                                 [&](std::int32_t at, const PointValues<P>& values) {
-                                   ++calls;
-                                   CHECK(at == column);
-                                   CHECK(values.u == uv.value[0]);
-                                   CHECK(values.v == uv.value[1]);
-                                   CHECK(values.s[0] == st.value[0]);
-                                   CHECK(values.t[0] == st.value[1]);
-                                   CHECK(values.r[0] == st.value[2]);
-                                 });
-      CHECK(calls == 1);
-      ++pixels;
+TEST_CASE("SegmentPlanner's segments keep the quadratic through each segment's ends and middle within 2^-T texel",
+          "[span][segments]") {
+  // Random spans: length up to 2000 px, divisors 2^16..2^31 (up to 2^15 apart:
+  // strong perspective), texel deltas up to 2^12 texels, every tolerance. The
+  // planner picks each segment's length from the start column as walk.hpp does
+  // (cut to fit before the span's end); the quadratic through the three exact
+  // points is compared with the curve at every pixel of the segment.
+  std::mt19937_64 random(0x5e6e07);
+  const int spans = 4000;
+  long long segments = 0, longer = 0, over = 0;
+  double worst_ratio = 0.0;
+  for (int n = 0; n < spans; ++n) {
+    const std::int32_t a = static_cast<std::int32_t>(random() % 3000), length = 1 + static_cast<std::int32_t>(random() % 2000);
+    const std::int32_t b = a + length;
+    auto divisor = [&] { return static_cast<std::uint32_t>(std::ldexp(1.0, 16 + static_cast<int>(random() % 15)) * (1.0 + (random() % 1000) / 1000.0)); };
+    const std::uint32_t e_a = divisor(), e_b = divisor();
+    const double F = std::ldexp(static_cast<double>(random() % 4096 + 1), -static_cast<int>(random() % 12)) * (random() % 2 ? 1 : -1);
+    const auto delta8 = static_cast<std::uint64_t>(std::floor(std::fabs(F) * 256.0));  // as texel_delta8 (walk.hpp): floored
+    const int tolerance = 1 + static_cast<int>(random() % 10);
+    spanlight::SegmentPlanner planner{};
+    planner.start(a, b, e_a, e_b, delta8, 24, tolerance, 6);
+    const double limit = std::ldexp(1.0, -tolerance);
+    for (std::int32_t x = a; x < b;) {
+      int k = planner.length_log2_at(x);
+      while ((std::int32_t{1} << k) > b - x) --k;
+      const std::int32_t L = std::int32_t{1} << k;
+      ++segments;
+      longer += k > 0;
+      if (k > 0) {
+        const double h = L / 2.0;
+        const double f0 = curve(x, a, b, e_a, e_b, F), f1 = curve(x + h, a, b, e_a, e_b, F), f2 = curve(x + L, a, b, e_a, e_b, F);
+        for (std::int32_t j = 1; j < L; ++j) {
+          if (j == L / 2) continue;
+          const double t = j / h;  // Newton form through 0, 1, 2
+          const double q = f0 + (f1 - f0) * t + (f2 - 2 * f1 + f0) / 2.0 * t * (t - 1.0);
+          const double err = std::fabs(curve(x + j, a, b, e_a, e_b, F) - q);
+          worst_ratio = std::max(worst_ratio, err / limit);
+          if (err > limit) {
+            ++over;
+            UNSCOPED_INFO("span " << a << ".." << b << ", e " << e_a << " " << e_b << ", F " << F << ", T " << tolerance
+                                  << ": segment at " << x << " of " << L << " px is off by " << err << " texel at +" << j);
+          }
+        }
+      }
+      x += L;
     }
-  });
-  CHECK(pixels > 100);
+  }
+  std::printf("SegmentPlanner: %lld segments, %lld longer than one pixel, worst error / 2^-T %.3f\n", segments, longer,
+              worst_ratio);
+  INFO(segments << " segments, " << longer << " longer than a pixel, worst error / tolerance " << worst_ratio);
+  CHECK(over == 0);
+  CHECK(longer > segments / 4);  // not vacuous: the planner does take long segments
+}
+
+TEST_CASE("SegmentPlanner takes the longest allowed segment where nothing is to bound, and the rounding cap",
+          "[span][segments]") {
+  spanlight::SegmentPlanner p{};
+  p.start(0, 1000, 1u << 30, 1u << 30, 1000 * 256, 24, 5, 6);  // equal divisors: affine, any length
+  CHECK(p.length_log2_at(0) == 6);
+  p.start(0, 1000, 1u << 30, 1u << 20, 0, 24, 5, 6);  // nothing changes along the span
+  CHECK(p.length_log2_at(500) == 6);
+  // Rounding: 2^(2k-1) units <= 2^-(T+1) texel needs 2k <= texel_bits - T: 8 bits a texel at T 2 caps k at 3.
+  p.start(0, 1000, 1u << 30, 1u << 30, 1000 * 256, 8, 2, 6);
+  CHECK(p.length_log2_at(0) == 3);
+  // Strong perspective and a tight tolerance: shorter than the knob where den is smallest (near b).
+  p.start(0, 1000, 1u << 30, 1u << 16, 4096 * 256, 24, 10, 6);
+  int shortest = 6;
+  for (std::int32_t x = 0; x < 1000; ++x) shortest = std::min(shortest, p.length_log2_at(x));
+  CHECK(shortest < 6);
+}
+
+TEST_CASE("quadratic_steps gives the quadratic through the three points exactly with room, else within 2^(2k-1) units",
+          "[span][segments]") {
+  std::mt19937 random(0x9adc);
+  std::uniform_int_distribution<std::int32_t> difference(-(1 << 30) + 1, (1 << 30) - 1), small_difference(-5000, 5000);
+  long long checked = 0, wrong = 0;
+  for (int n = 0; n < 20000; ++n) {
+    const int k = 1 + static_cast<int>(random() % 6), shift = static_cast<int>(random() % 21);
+    const bool small = n % 2 == 0;
+    const std::int32_t d1 = small ? small_difference(random) : difference(random);
+    const std::int32_t d2 = small ? small_difference(random) : difference(random);
+    const spanlight::QuadraticSteps q = spanlight::quadratic_steps(d1, d2, k, shift);
+    // Exactly, q(j) 2^(2k-1) = j d1 2^k + j (j - h)(d2 - d1), h = 2^(k-1); in the scale, times 2^shift.
+    const int s = 2 * k - 1;
+    const __int128 h = __int128{1} << (k - 1);
+    std::uint32_t value = 0, step = q.step;
+    for (std::int32_t j = 0; j <= (1 << k); ++j) {
+      const __int128 exact = (__int128{j} * d1 * (__int128{1} << k) + __int128{j} * (j - h) * (__int128{d2} - d1)) *
+                             (__int128{1} << shift);  // * 2^s
+      const auto floor_low = static_cast<std::uint32_t>(static_cast<std::uint64_t>(exact >> s));  // floor, mod 2^32
+      const __int128 below = exact - (exact >> s) * (__int128{1} << s);  // in [0, 2^s)
+      const __int128 error = __int128{static_cast<std::int32_t>(value - floor_low)} * (__int128{1} << s) - below;  // * 2^s
+      const __int128 bound = shift >= s ? 0 : __int128{1} << (2 * k - 1 + s);
+      ++checked;
+      wrong += error > bound || error < -bound;
+      value += step;
+      step += q.curve;
+    }
+  }
+  INFO(checked << " stepped values checked");
+  CHECK(wrong == 0);
+}
+
+TEST_CASE("QuadraticRows walks a small triangle's quadratic exactly, modulo 2^32", "[span][small]") {
+  std::mt19937 random(0x5a11);
+  int wrong = 0;
+  for (int n = 0; n < 200; ++n) {
+    const spanlight::QuadraticAttribute q{random(), random(), random(), random(), random(), random()};
+    const std::uint32_t r0 = random() % 64;
+    spanlight::QuadraticRows rows{};
+    rows.start(q, r0);
+    for (std::uint32_t r = r0; r < 64; ++r) {
+      for (const std::uint32_t c0 : {0u, 1u, 17u, 63u}) {
+        std::uint32_t v, step, curve;
+        rows.at(c0, v, step, curve);
+        for (std::uint32_t c = c0; c < 64; ++c) {
+          const std::uint32_t exact = q.q00 + q.q10 * c + q.q01 * r + q.q20 * c * c + q.q11 * c * r + q.q02 * r * r;
+          wrong += v != exact;
+          v += step;
+          step += curve;
+        }
+      }
+      rows.next_row();
+    }
+  }
+  CHECK(wrong == 0);
+}
+
+namespace {
+
+struct PlaneErrors {
+  long long triangles = 0, values = 0, over = 0;
+  double worst_units = 0.0, worst_ratio = 0.0;
+};
+
+// Each plane coefficient is floor(x rcp / 2^(4 + L)) with rcp = reciprocal<8, 2> of D: off by less than
+// one unit (the floor) plus |exact| eps (eps = 2^-28.9, |exact| <= 24 * 2^26 for non-slivers). A value at
+// column c, row r sums 1 + c + r coefficients: |error| <= (1 + c + r)(1 + 24 * 2^26 * 2^-28.9) units of 2^-26.
+PlaneErrors plane_errors() {
+  std::mt19937 random(0x5ba11);
+  const double eps = std::ldexp(1.0, -28) / std::sqrt(std::sqrt(std::sqrt(2.0))) /* 2^-28.125 > 2^-28.9: safe */;
+  PlaneErrors r;
+  const int cases = 3000;
+  for (int n = 0; n < cases; ++n) {
+    spanlight::ScreenVertex v[3]{};
+    const std::int32_t extent = 256 + static_cast<std::int32_t>(random() % (spanlight::small_triangle_extent - 256));
+    for (auto& s : v) {
+      s.x = 100000 + static_cast<std::int32_t>(random() % static_cast<std::uint32_t>(extent));
+      s.y = 3000 + static_cast<std::int32_t>(random() % static_cast<std::uint32_t>(extent));
+    }
+    spanlight::SmallTriangle t{};
+    bool covers = false;
+    if (!spanlight::setup_small(v, spanlight::Cull::none, 1 << 14, t, covers) || !covers) continue;
+    ++r.triangles;
+    // The exact barycentrics from the triangle's own vertices, in setup order (slot 1, slot 2).
+    const std::int32_t ox = t.column0 * 256 + 128, oy = t.row0 * 256 + 128;
+    const spanlight::ScreenVertex& p0 = v[t.order[0]];
+    const spanlight::ScreenVertex& p1 = v[t.order[1]];
+    const spanlight::ScreenVertex& p2 = v[t.order[2]];
+    const double D = double(p1.x - p0.x) * double(p2.y - p0.y) - double(p1.y - p0.y) * double(p2.x - p0.x);
+    auto exact = [&](const spanlight::ScreenVertex& a, const spanlight::ScreenVertex& b, double x, double y) {
+      // E for the edge from a to b at (x, y), as SmallEdge: dy * (ax - x) - dx * (ay - y), over D.
+      const double dx = b.x - a.x, dy = b.y - a.y;
+      return (dy * (a.x - x) - dx * (a.y - y)) / D;
+    };
+    for (std::int32_t row = 0; row < 64; ++row) {
+      for (std::int32_t c = 0; c < 64; ++c) {
+        const double x = ox + 256.0 * c, y = oy + 256.0 * row;
+        // Plane l1 is edge 1 (slot 2 -> slot 0), l2 edge 2 (slot 0 -> slot 1), as setup_small orders them.
+        const double l1 = exact(p2, p0, x, y), l2 = exact(p0, p1, x, y);
+        if (std::fabs(l1) > 12.0 || std::fabs(l2) > 12.0) continue;
+        const double got1 = t.l1.at_corner + double(t.l1.per_column) * c + double(t.l1.per_row) * row;
+        const double got2 = t.l2.at_corner + double(t.l2.per_column) * c + double(t.l2.per_row) * row;
+        const double bound = (1 + c + row) * (1.0 + 24.0 * 0x1p26 * eps);
+        for (const double e : {std::fabs(got1 - l1 * 0x1p26), std::fabs(got2 - l2 * 0x1p26)}) {
+          ++r.values;
+          r.worst_units = std::max(r.worst_units, e);
+          r.worst_ratio = std::max(r.worst_ratio, e / bound);
+          r.over += e > bound;
+        }
+      }
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("a small triangle's barycentric planes stay within their derived bound of E_i / D over its box",
+          "[span][small]") {
+  const PlaneErrors r = plane_errors();
+  std::printf("small triangles: %lld set up, %lld plane values, worst %.2f units of 2^-26 (error / bound %.3f)\n",
+              r.triangles, r.values, r.worst_units, r.worst_ratio);
+  INFO(r.triangles << " small triangles, worst plane error " << r.worst_units << " units of 2^-26");
+  CHECK(r.triangles > 1000);
+  CHECK(r.over == 0);
+}
+
+TEST_CASE("a small triangle's barycentric planes stay within small.hpp's stated 130 * 2^-27 over the box",
+          "[span][small]") {
+  // small.hpp (SmallTriangle::affine) states the planes' rounding at 2^-27 a step, 130 * 2^-27 over
+  // the box (65 units of 2^-26), and draw.hpp's small_depth_margin (256 Q0.32 units) is derived from
+  // it. The coefficients are floored (mul_s32_u32 >> shift), up to one whole unit (2^-26) each: the
+  // box's corner sums 129 of them. Measured here against the exact E_i / D.
+  const PlaneErrors r = plane_errors();
+  INFO("worst plane error " << r.worst_units << " units of 2^-26; small.hpp states at most 65");
+  CHECK(r.worst_units <= 65.0);
 }

@@ -86,13 +86,11 @@ int uv_frac_bits_for(double largest_texel_coordinate) {
   return std::clamp(29 - integer_bits, 8, 16);
 }
 
-namespace {
-
 // A repeating image with a side of one texel, doubled along that side: the
 // sampler finds a texel as the top log2(size) bits of a 32-bit fraction, and
 // log2 1 = 0 would shift by 32. Both copies are the one row (or column), so
 // nearest and bilinear read the same values as from the original.
-scene::Image repeatable(const scene::Image& image) {
+scene::Image repeatable_image(const scene::Image& image) {
   if (image.width > 1 && image.height > 1) return image;
   scene::Image out;
   out.width = image.width == 1 ? 2 : image.width;
@@ -102,8 +100,6 @@ scene::Image repeatable(const scene::Image& image) {
       for (const std::uint8_t c : image.texel(x % image.width, y % image.height)) out.rgb.push_back(c);
   return out;
 }
-
-}  // namespace
 
 std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
   auto out = std::make_unique<PreparedStorage>();
@@ -129,7 +125,7 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
     if (use.mipmapped) {  // the mipmap sampler takes a side of one texel at any level
       for (const scene::Image& level : scene::mip_chain(t.image)) storage.framed.push_back(framed_texels(level, wrap));
     } else {
-      storage.framed.push_back(framed_texels(wrap == Wrap::repeat ? repeatable(t.image) : t.image, wrap));
+      storage.framed.push_back(framed_texels(wrap == Wrap::repeat ? repeatable_image(t.image) : t.image, wrap));
     }
     const auto id = static_cast<std::int16_t>(out->texture_storage.size() - 1);
     baked.emplace(use, id);
@@ -153,7 +149,7 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
     PreparedTexture& storage = out->texture_storage[i];
     const Use& use = order[i];
     const scene::Texture& t = s.textures[static_cast<std::size_t>(use.index)];
-    const bool doubled = use.wrap == Wrap::repeat && !use.mipmapped;  // as repeatable() bakes it
+    const bool doubled = use.wrap == Wrap::repeat && !use.mipmapped;  // as repeatable_image() bakes it
     const int width0 = doubled ? std::max(2, t.image.width) : t.image.width;
     const int height0 = doubled ? std::max(2, t.image.height) : t.image.height;
     for (std::size_t k = 0; k < storage.framed.size(); ++k) {

@@ -58,6 +58,12 @@ struct PreparedStorage {
 
 std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& scene);
 
+// A repeating image with a side of one texel, doubled along that side (both copies the
+// one row or column: nearest and bilinear read the same values). The repeat sampler takes
+// a texel index as the top log2(size) bits of a 32-bit coordinate, so a side of 1 would
+// shift by 32; prepare_scene bakes every repeating level 0 through this.
+scene::Image repeatable_image(const scene::Image& image);
+
 // One image in the sampler's layout: 0x00RRGGBB, rows from the bottom, with a
 // one-texel frame holding what `wrap` reads beyond the edges.
 std::vector<std::uint32_t> framed_texels(const scene::Image& image, Wrap wrap);

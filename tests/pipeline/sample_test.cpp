@@ -240,16 +240,20 @@ TEST_CASE("the samplers for a size fixed at compile time equal the general repea
   check_size.template operator()<8, 8>();
 }
 
-TEST_CASE("a repeating texture one texel wide or high reads its own texels, nearest and bilinear", "[sample]") {
+TEST_CASE("a repeating texture one texel wide or high is baked two wide or high and reads its own texels", "[sample]") {
   // A repeating 1xN texture is valid (a power of two), and every coordinate wraps to its one
-  // column. texel_grid gives it x_shift = 32 - log2(1) = 32, and `x >> 32` on a 32-bit
-  // coordinate is undefined (on x86 it leaves x unchanged: a read far outside the texture).
+  // column. The sampler's texel index is the top log2(width) bits of a 32-bit coordinate, and
+  // log2 1 = 0 would shift by 32, so prepare bakes it doubled (repeatable_image): 2xN, the two
+  // columns the same, which every coordinate reads as the 1xN texture.
   spanlight::scene::Image image{1, 4, {}};
   for (int row = 0; row < 4; ++row) image.rgb.insert(image.rgb.end(), {static_cast<std::uint8_t>(60 * row), 7, 9});
-  const std::vector<std::uint32_t> framed = spanlight::prepare::framed_texels(image, Wrap::repeat);
-  const spanlight::TextureLevel level{framed.data() + 3 + 1, 1, 4, 3};
+  const spanlight::scene::Image baked = spanlight::prepare::repeatable_image(image);
+  REQUIRE(baked.width == 2);
+  REQUIRE(baked.height == 4);
+  const std::vector<std::uint32_t> framed = spanlight::prepare::framed_texels(baked, Wrap::repeat);
+  const spanlight::TextureLevel level{framed.data() + 4 + 1, 2, 4, 4};
   const TexelGrid g = spanlight::texel_grid(level, 8);
-  REQUIRE(g.x_shift <= 32);
+  REQUIRE(g.x_shift < 32);
   // v = 1.5 texels of 4 (a fraction 1.5 / 4 of 2^32): row_from_bottom 1 = row_from_top 2: r 120.
   const std::uint32_t v = 0x60000000u;
   int wrong = 0;

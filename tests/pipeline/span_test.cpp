@@ -232,8 +232,8 @@ TEST_CASE("a small triangle's barycentric planes stay within small.hpp's stated 
           "[span][small]") {
   // small.hpp (SmallTriangle::affine) states the planes' rounding at 2^-27 a step, 130 * 2^-27 over
   // the box (65 units of 2^-26), and draw.hpp's small_depth_margin (256 Q0.32 units) is derived from
-  // it. The coefficients are floored (mul_s32_u32 >> shift), up to one whole unit (2^-26) each: the
-  // box's corner sums 129 of them. Measured here against the exact E_i / D.
+  // it. The coefficients are rounded, within half a unit (2^-27) each, and the box's corner sums
+  // 129 of them. Measured here against the exact E_i / D.
   const PlaneErrors r = plane_errors();
   INFO("worst plane error " << r.worst_units << " units of 2^-26; small.hpp states at most 65");
   CHECK(r.worst_units <= 65.0);

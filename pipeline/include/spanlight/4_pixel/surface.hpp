@@ -65,7 +65,7 @@ template <Features F, template <int, int> class Sampler, typename Fn>
   const auto size = static_cast<std::uint8_t>(((32 - g.x_shift) << 4) | (32 - g.y_shift));
   bool done = false;
   [&]<std::size_t... I>(std::index_sequence<I...>) SPANLIGHT_LAMBDA_INLINE_ATTR {
-    (([&] SPANLIGHT_LAMBDA_INLINE_ATTR {
+    (([&]() SPANLIGHT_LAMBDA_INLINE_ATTR {
        constexpr std::uint8_t s = F.repeat_sizes[I];
        if constexpr (s != 0) {
          if (!done && size == s) {

@@ -8,10 +8,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void add_once(std::vector<fs::path>& files, const fs::path& file) {
-  if (std::find(files.begin(), files.end(), file) == files.end()) files.push_back(file);
-}
-
 // Make's escapes, which Ninja's depfile reader also undoes: "\ " and "\#" for a literal space
 // and '#', "$$" for '$'. A line break cannot be escaped.
 std::string escaped(const fs::path& file) {

@@ -11,9 +11,10 @@
 namespace spanlight::sweep {
 namespace {
 
-// The fields of a demangled Features literal ("spanlight::Features{(unsigned char)4, true, ...}"),
-// in the struct's order, trailing zero ones left out; table_bits and newton are the 11th and 12th.
-constexpr std::size_t table_bits_field = 10, newton_field = 11;
+// The fields of a demangled Features literal ("spanlight::Features{(unsigned char)4, true, ...}")
+// come in the struct's order, trailing zero fields left out. table_bits and newton follow the
+// pixel format and the two pass flags (features.hpp), so they are found from the format's field.
+constexpr std::size_t table_bits_after_format = 3, newton_after_format = 4;
 
 int field_value(const std::string& text) {
   const std::size_t close = text.rfind(')');
@@ -52,7 +53,10 @@ std::string classify_symbol(const std::string& name, int& table_bits, int& newto
     std::vector<std::string> fields;
     std::stringstream list(m[1].str());
     for (std::string f; std::getline(list, f, ',');) fields.push_back(f);
-    if (fields.size() > table_bits_field) {  // trailing zero fields are left out of the name
+    std::size_t format = 0;
+    while (format < fields.size() && fields[format].find("PixelFormat)") == std::string::npos) ++format;
+    const std::size_t table_bits_field = format + table_bits_after_format, newton_field = format + newton_after_format;
+    if (format < fields.size() && fields.size() > table_bits_field) {  // trailing zero fields are left out
       table_bits = field_value(fields[table_bits_field]);
       newton = fields.size() > newton_field ? field_value(fields[newton_field]) : 0;
       return "instantiation";

@@ -39,7 +39,7 @@ void check_wall(const EffectRenderer& renderer, const scene::Scene& s, bool lit)
 
 }  // namespace
 
-TEST_CASE("facing_only: a projector behind a wall lights nothing; without it the light shows through", "[effects][facing]") {
+TEST_CASE("facing_only: a projector behind a wall lights nothing, and without it the light shows through", "[effects][facing]") {
   // The slide projector of v2_facing_wall, head-on: 3 units behind the wall, aimed at it.
   // Its frustum (fovy 90) holds the whole wall: s/q, t/q in [1/3, 2/3], inside the white image.
   scene::Projector behind = projector({0, 0, -3}, {0, 0, 0}, 90, 0.5, 20, -1);

@@ -126,7 +126,7 @@ int pixels_differing(const Picture& a, const Picture& b, int lsb) {
 
 }  // namespace
 
-TEST_CASE("a shadowed camera-space light is unchanged by a rigid motion of camera and scene; a world-space one is not",
+TEST_CASE("a shadowed camera-space light is unchanged by a rigid motion of camera and scene, a world-space one is not",
           "[effects][headlight]") {
   const glm::dmat4 motion = glm::translate(glm::dmat4(1.0), glm::dvec3(2.0, 0.5, -1.0)) *
                             glm::rotate(glm::dmat4(1.0), glm::radians(30.0), glm::dvec3(0.2, 1.0, 0.1));

@@ -174,14 +174,14 @@ TEST_CASE("memory: tables and buffers", "[sweep]") {
 TEST_CASE("flash: symbols are sorted into shared, per instantiation, tables, and not ours", "[sweep]") {
   int b = 0, n = 0;
   // As arm-none-eabi-nm -C prints them (trailing zero fields left out).
-  const std::string features = "spanlight::Features{(unsigned char)1, true, true, true, true, false, false, "
-                               "(spanlight::PixelFormat)0, true, true, (unsigned char)10, (unsigned char)0, (unsigned char)0, "
+  const std::string features = "spanlight::Features{(unsigned char)1, true, true, true, true, false, false, false, false, "
+                               "false, (spanlight::PixelFormat)0, true, true, (unsigned char)10, (unsigned char)0, (unsigned char)0, "
                                "unsigned char [4]{(unsigned char)102, (unsigned char)119}}";
   CHECK(classify_symbol("spanlight::RenderStatus spanlight::render_frame<" + features +
                             ", unsigned long, spanlight::NoHooks>(spanlight::PreparedScene const&, ...)", b, n) == "instantiation");
   CHECK((b == 10 && n == 0));
   CHECK(classify_symbol("void spanlight::FusedKernel<spanlight::Features{(unsigned char)1, true, true, true, true, false, "
-                        "false, (spanlight::PixelFormat)0, true, true, (unsigned char)12}, unsigned long, spanlight::NoHooks>"
+                        "false, false, false, false, (spanlight::PixelFormat)0, true, true, (unsigned char)12}, unsigned long, spanlight::NoHooks>"
                         "::run<1>(unsigned long, long, spanlight::PixelRun<1> const&) const", b, n) == "instantiation");
   CHECK((b == 12 && n == 0));  // Newton 0 and everything after it left out of the name
   // The bench's per-pass copy (its hooks type lives in an anonymous namespace): not counted.

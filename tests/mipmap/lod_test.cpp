@@ -82,26 +82,48 @@ double exact_lambda(const TriangleSetup& t, const Case& c, double px, double py)
 
 }  // namespace
 
+namespace {
+
+// A random triangle over a 320 x 240 window (1/w spread over 2^6, uv within +-texel_range
+// texels, 8 sub-texel bits), set up, with the uv in setup order; false when it covers nothing.
+struct SetUpCase {
+  Case c{};
+  TriangleSetup t{};
+  std::int32_t u[3], v[3];
+  LodPlanes planes{};
+};
+bool random_case(std::mt19937& rng, int texel_range, SetUpCase& out) {
+  std::uniform_int_distribution<int> coordinate(0, 320 * 256), exponent(0, 6), mantissa(1 << 30, (1u << 31) - 1);
+  std::uniform_int_distribution<int> texel(-texel_range * 256, texel_range * 256);
+  Case& c = out.c;
+  c.frac = 8;
+  for (int i = 0; i < 3; ++i) {
+    c.v[i] = {coordinate(rng), coordinate(rng) * 3 / 4, 1 << 29, static_cast<std::uint32_t>(mantissa(rng)), 40 + exponent(rng)};
+    c.u[i] = texel(rng);
+    c.w[i] = texel(rng);
+  }
+  if (!setup_triangle(c.v, Cull::none, 240, out.t)) return false;
+  const ScreenVertex* at[3] = {&c.v[out.t.order[0]], &c.v[out.t.order[1]], &c.v[out.t.order[2]]};
+  for (int k = 0; k < 3; ++k) {
+    out.u[k] = c.u[out.t.order[k]];
+    out.v[k] = c.w[out.t.order[k]];
+  }
+  out.planes = lod_planes(out.t, at, out.u, out.v, c.frac);
+  return true;
+}
+
+}  // namespace
+
 TEST_CASE("lod_at is lambda of the perspective mapping within 2^-8.5", "[mipmap]") {
   std::mt19937 rng(0x5eed15);
-  std::uniform_int_distribution<int> coordinate(0, 320 * 256), exponent(0, 6), mantissa(1 << 30, (1u << 31) - 1);
-  std::uniform_int_distribution<int> texel(-4096 * 256, 4096 * 256);
   int pixels = 0;
   double worst = 0;
   for (int n = 0; n < 400; ++n) {
-    Case c{};
-    c.frac = 8;
-    for (int i = 0; i < 3; ++i) {
-      c.v[i] = {coordinate(rng), coordinate(rng) * 3 / 4, 1 << 29, static_cast<std::uint32_t>(mantissa(rng)), 40 + exponent(rng)};
-      c.u[i] = texel(rng);
-      c.w[i] = texel(rng);
-    }
-    TriangleSetup t{};
-    if (!setup_triangle(c.v, Cull::none, 240, t)) continue;
-    const ScreenVertex* at[3] = {&c.v[t.order[0]], &c.v[t.order[1]], &c.v[t.order[2]]};
-    const std::int32_t u[3] = {c.u[t.order[0]], c.u[t.order[1]], c.u[t.order[2]]};
-    const std::int32_t v[3] = {c.w[t.order[0]], c.w[t.order[1]], c.w[t.order[2]]};
-    LodPlanes planes = lod_planes(t, at, u, v, c.frac);
+    SetUpCase sc;
+    if (!random_case(rng, 4096, sc)) continue;
+    const Case& c = sc.c;
+    const TriangleSetup& t = sc.t;
+    LodPlanes& planes = sc.planes;
     for (std::int32_t row = t.row_begin; row < t.row_end; row += 7) {
       TriangleSetup rows = t;
       for (Edge& e : rows.edge) e.skip_rows(row - t.row_begin);
@@ -128,25 +150,17 @@ TEST_CASE("lod_at is lambda of the perspective mapping within 2^-8.5", "[mipmap]
 // so every pixel's own lambda is within 1/32 + 2^-8.5 of the held one.
 TEST_CASE("a run's held lambda is within 1/32 + 2^-8.5 of each of its pixels'", "[mipmap]") {
   std::mt19937 rng(0x5eed16);
-  std::uniform_int_distribution<int> coordinate(0, 320 * 256), exponent(0, 6), mantissa(1 << 30, (1u << 31) - 1);
-  std::uniform_int_distribution<int> texel(-2048 * 256, 2048 * 256);
   const double bound = 1.0 / 32 + std::exp2(-8.5);
   int pixels = 0, runs = 0;
   double worst = 0;
   for (int n = 0; n < 300; ++n) {
-    Case c{};
-    c.frac = 8;
-    for (int i = 0; i < 3; ++i) {
-      c.v[i] = {coordinate(rng), coordinate(rng) * 3 / 4, 1 << 29, static_cast<std::uint32_t>(mantissa(rng)), 40 + exponent(rng)};
-      c.u[i] = texel(rng);
-      c.w[i] = texel(rng);
-    }
-    TriangleSetup t{};
-    if (!setup_triangle(c.v, Cull::none, 240, t)) continue;
-    const ScreenVertex* at[3] = {&c.v[t.order[0]], &c.v[t.order[1]], &c.v[t.order[2]]};
-    const std::int32_t u[3] = {c.u[t.order[0]], c.u[t.order[1]], c.u[t.order[2]]};
-    const std::int32_t v[3] = {c.w[t.order[0]], c.w[t.order[1]], c.w[t.order[2]]};
-    LodPlanes planes = lod_planes(t, at, u, v, c.frac);
+    SetUpCase sc;
+    if (!random_case(rng, 2048, sc)) continue;
+    const Case& c = sc.c;
+    const TriangleSetup& t = sc.t;
+    const std::int32_t(&u)[3] = sc.u;
+    const std::int32_t(&v)[3] = sc.v;
+    LodPlanes& planes = sc.planes;
     TriangleAttributes<0> attrs{};
     attrs.u0 = u[0];
     attrs.du1 = u[1] - u[0];

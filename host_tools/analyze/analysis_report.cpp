@@ -20,7 +20,9 @@ std::string num(double v) {
 
 std::string interval(const Interval& i) { return i.empty ? std::string("none") : std::string("[") + num(i.lo) + ", " + num(i.hi) + "]"; }
 
-const char* filter_name(scene::Filter f) { return f == scene::Filter::nearest ? "nearest" : "bilinear"; }
+const char* filter_name(scene::Filter f) {
+  return f == scene::Filter::nearest ? "nearest" : (f == scene::Filter::bilinear ? "bilinear" : "trilinear");
+}
 const char* wrap_name(scene::Wrap w) { return w == scene::Wrap::repeat ? "repeat" : w == scene::Wrap::clamp ? "clamp" : "border"; }
 
 }  // namespace
@@ -28,17 +30,23 @@ const char* wrap_name(scene::Wrap w) { return w == scene::Wrap::repeat ? "repeat
 std::string features_text(const scene::Scene& s) {
   std::ostringstream out;
   std::size_t triangles = 0;
-  bool bilinear = false, shadows = false, pcf = false;
+  bool bilinear = false, trilinear = false, shadows = false, pcf = false, falloff = false, facing = false;
   for (const scene::Object& o : s.objects) triangles += o.mesh.triangles.size();
-  for (const scene::Texture& t : s.textures) bilinear |= t.filter == scene::Filter::bilinear;
+  for (const scene::Texture& t : s.textures) {
+    bilinear |= t.filter == scene::Filter::bilinear;
+    trilinear |= t.filter == scene::Filter::trilinear;
+  }
   for (const scene::Projector& p : s.projectors) {
     shadows |= p.shadows.has_value();
     pcf |= p.shadows && p.shadows->filter == scene::ShadowFilter::pcf2x2;
+    falloff |= p.falloff >= 0;
+    facing |= p.facing_only;
   }
   out << "Features used\n"
       << "  frame " << s.width << "x" << s.height << ", " << s.objects.size() << " object(s), " << triangles << " triangle(s)\n"
       << "  projectors " << s.projectors.size() << ", shadows " << (shadows ? "yes" : "no") << (pcf ? " (pcf2x2)" : "")
-      << ", bilinear " << (bilinear ? "yes" : "no") << "\n";
+      << ", bilinear " << (bilinear ? "yes" : "no") << ", trilinear " << (trilinear ? "yes" : "no")
+      << ", falloff " << (falloff ? "yes" : "no") << ", facing_only " << (facing ? "yes" : "no") << "\n";
   for (const scene::Texture& t : s.textures)
     out << "  texture " << t.name << ": " << t.image.width << "x" << t.image.height << ", " << filter_name(t.filter) << ", "
         << wrap_name(t.wrap) << "\n";

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include "sweep/coordinate_map.hpp"
+#include "sweep/filter_override.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/measurement.hpp"
 #include "sweep/memory_cost.hpp"
@@ -256,4 +257,23 @@ TEST_CASE("coordinate errors: the larger axis, interior pixels only, mismatches 
   CHECK(compare_coordinates(fixed, ref, {true}).uv_max == 0.25);
   fixed.wrap_width.assign(1, 0);
   CHECK(compare_coordinates(fixed, ref, {true}).uv_max == 16.25);
+}
+
+TEST_CASE("the forced filters are those that change a texture: a trilinear scene gets a bilinear variant", "[sweep]") {
+  using spanlight::sweep::FilterChoice;
+  auto choices = [](std::initializer_list<spanlight::scene::Filter> filters) {
+    spanlight::scene::Scene s;
+    for (const auto f : filters) {
+      spanlight::scene::Texture t;
+      t.filter = f;
+      s.textures.push_back(t);
+    }
+    return spanlight::sweep::distinct_filter_choices(s);
+  };
+  using F = spanlight::scene::Filter;
+  CHECK(choices({F::bilinear}) == std::vector<FilterChoice>{FilterChoice::scene, FilterChoice::nearest});
+  CHECK(choices({F::nearest}) == std::vector<FilterChoice>{FilterChoice::scene, FilterChoice::bilinear});
+  CHECK(choices({F::trilinear}) == std::vector<FilterChoice>{FilterChoice::scene, FilterChoice::nearest, FilterChoice::bilinear});
+  CHECK(choices({F::nearest, F::bilinear}) == std::vector<FilterChoice>{FilterChoice::scene, FilterChoice::nearest, FilterChoice::bilinear});
+  CHECK(choices({}) == std::vector<FilterChoice>{FilterChoice::scene});
 }

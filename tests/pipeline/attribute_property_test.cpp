@@ -16,7 +16,7 @@
 // inputs the pipeline got from prepare, read back exactly, with clip x, y set
 // so that it snaps to the pipeline's own subpixels: same vertices, same pixels
 // (checked), so every covered pixel is compared, triangle edges included. The
-// sweep's coordinate maps (host_tools/sweep) do not fit here: they let each
+// sweep's coordinate maps (host_tools/measure/sweep) do not fit here: they let each
 // renderer snap on its own and skip pixels near triangle edges for that reason.
 #include <catch2/catch.hpp>
 

@@ -31,6 +31,18 @@ struct PassView {
   std::int32_t row_begin, row_end;  // the rows this pass writes (a band); pixel index = (row - row_begin) * width + column
 };
 
+// Whether a triangle with these window corners can reach a row of the band: the same rows as
+// setup (centres 256 r + 128 within [y_min, y_max]), found before any setup or projector
+// transform, so the triangles of other bands cost a few compares. Exact, not a heuristic: a
+// triangle skipped here is one whose setup gives no row in [row_begin, row_end).
+constexpr bool may_cover_rows(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                              const PassView& view) {
+  const std::int32_t y_min = a.y < b.y ? (a.y < c.y ? a.y : c.y) : (b.y < c.y ? b.y : c.y);
+  const std::int32_t y_max = a.y > b.y ? (a.y > c.y ? a.y : c.y) : (b.y > c.y ? b.y : c.y);
+  // |y| < 2^21 (the guard band): the products stay far inside 32 bits.
+  return y_max >= view.row_begin * 256 + 128 && y_min <= view.row_end * 256 - 128;
+}
+
 // Guard band in multiples of w: keeps window coordinates within +-2^21
 // subpixels (8192 px) and |x + w| <= 7w for the vertex divider.
 constexpr std::int64_t guard_band(int width, int height) {
@@ -145,6 +157,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
   }
   SpanControl control{knobs.span_log2, knobs.tolerance_log2, nullptr, 8, projector_texels, projector_texel_bits, z_limit};
   const int pc = scene.projector_count;
+  const bool banded = view.row_begin > 0 || view.row_end < view.height;  // a whole frame needs no row test
 
   for (std::uint16_t o = 0; o < scene.object_count; ++o) {
     const ObjectData& object = scene.objects[o];
@@ -214,7 +227,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       const CachedVertex& a = cache[index[0]];
       const CachedVertex& b = cache[index[1]];
       const CachedVertex& c = cache[index[2]];
-      if (a.outside & b.outside & c.outside) continue;  // all beyond one plane
+      if (a.outside & b.outside         if (banded && !may_cover_rows(a.screen, b.screen, c.screen, view)) continue;
+& c.outside) continue;  // all beyond one plane
       if ((a.outside | b.outside | c.outside) == 0) {
         const ScreenVertex corners[3] = {a.screen, b.screen, c.screen};
         if (small_allowed) {

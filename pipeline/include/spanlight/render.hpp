@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstring>
 
 #include "spanlight/3_span/divide.hpp"
 #include "spanlight/5_frame/draw.hpp"
@@ -102,7 +103,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
     if constexpr (F.shadows) {
       if (!p.shadows) continue;
       const std::span<DepthT> map = target.shadow_maps[static_cast<std::size_t>(j)];
-      for (DepthT& d : map) d = static_cast<DepthT>(depth.clear);
+      clear_depth(map.data(), map.size(), depth.clear);
       hooks.pass_begin(Pass::shadow_depth, j);
       ShadowDepthKernel<F, DepthT, std::remove_reference_t<Hooks>> kernel{map.data(), depth, hooks};
       draw_pass<F>(scene, matrices, PassView{p.map_size, p.map_size, j, 0, p.map_size}, knobs, divide, depth.z_limit, target.vertices.data(), kernel, hooks);
@@ -116,10 +117,8 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
   for (std::uint16_t y0 = 0; y0 < scene.height; y0 = static_cast<std::uint16_t>(y0 + band_rows)) {
     const std::uint16_t rows = scene.height - y0 < band_rows ? static_cast<std::uint16_t>(scene.height - y0) : band_rows;
     const std::uint32_t pixels = std::uint32_t{scene.width} * rows;
-    for (std::uint32_t i = 0; i < pixels; ++i) {
-      target.depth[i] = static_cast<DepthT>(depth.clear);
-      Color::store(target.color.data() + i * Color::per_pixel, black);
-    }
+    clear_depth(target.depth.data(), pixels, depth.clear);
+    std::memset(target.color.data(), 0, std::size_t{pixels} * Color::per_pixel * sizeof(target.color[0]));  // black: all bytes 0 in every format
     const PassView eye{scene.width, scene.height, -1, y0, y0 + rows};
     const BandBuffers<F.format, DepthT> band{target.color.data(), target.depth.data(), target.tie_mask.data()};
     using H = std::remove_reference_t<Hooks>;
@@ -132,9 +131,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
         hooks.pass_end(Pass::fused, -1);
       }
     } else if constexpr (F.multipass) {
-      auto clear_mask = [&] {
-        for (std::uint32_t i = 0, n = tie_mask_bytes(pixels); i < n; ++i) target.tie_mask[i] = 0;
-      };
+      auto clear_mask = [&] { std::memset(target.tie_mask.data(), 0, tie_mask_bytes(pixels)); };
       DepthAmbientKernel<F, DepthT, H> depth_pass{band, ambient, depth, hooks};
       hooks.pass_begin(Pass::depth_ambient, -1);
       draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, target.vertices.data(), depth_pass, hooks);

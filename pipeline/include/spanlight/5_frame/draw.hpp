@@ -46,9 +46,12 @@ constexpr bool may_cover_rows(const ScreenVertex& a, const ScreenVertex& b, cons
 // Guard band in multiples of w: keeps window coordinates within +-2^21
 // subpixels (8192 px) and |x + w| <= 7w for the vertex divider.
 constexpr std::int64_t guard_band(int width, int height) {
+  // The largest g in [1, 6] with (g + 1) * larger <= 16000 (g = 16000 / larger - 1, clamped),
+  // found without a divide.
   const int larger = width > height ? width : height;
-  const int g = 16000 / larger - 1;
-  return g > 6 ? 6 : (g < 1 ? 1 : g);
+  int g = 6;
+  while (g > 1 && (g + 1) * larger > 16000) --g;
+  return g;
 }
 
 // Whether a triangle of this object may take the small path in this pass; the
@@ -227,9 +230,9 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       const CachedVertex& a = cache[index[0]];
       const CachedVertex& b = cache[index[1]];
       const CachedVertex& c = cache[index[2]];
-      if (a.outside & b.outside         if (banded && !may_cover_rows(a.screen, b.screen, c.screen, view)) continue;
-& c.outside) continue;  // all beyond one plane
+      if (a.outside & b.outside & c.outside) continue;  // all beyond one plane
       if ((a.outside | b.outside | c.outside) == 0) {
+        if (banded && !may_cover_rows(a.screen, b.screen, c.screen, view)) continue;
         const ScreenVertex corners[3] = {a.screen, b.screen, c.screen};
         if (small_allowed) {
           SmallTriangle t;

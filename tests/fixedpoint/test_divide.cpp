@@ -68,3 +68,30 @@ TEST_CASE("divide_rounded rounds to nearest with ties away from zero", "[divide]
     if (abs_twice == d) REQUIRE((n >= 0 ? q * static_cast<__int128>(d) > n : q * static_cast<__int128>(d) < n));
   }
 }
+
+TEST_CASE("floor_div_wide is the exact floor and remainder for every 64-bit numerator", "[divide]") {
+  auto require_floor = [](std::int64_t n, std::uint32_t d) {
+    const fixedpoint::WideFloorDivMod qr = fixedpoint::floor_div_wide(n, d);
+    // The floor from __int128: q d <= n < (q + 1) d, r = n - q d.
+    const __int128 wide_n = n, wide_d = d;
+    __int128 q = wide_n / wide_d;
+    if (q * wide_d > wide_n) --q;
+    INFO("n " << n << ", d " << d);
+    REQUIRE(qr.quotient == static_cast<std::int64_t>(q));
+    REQUIRE(static_cast<__int128>(qr.remainder) == wide_n - q * wide_d);
+  };
+  std::mt19937_64 rng(20261205);
+  for (int i = 0; i < random_cases; ++i) {
+    const auto d = static_cast<std::uint32_t>(rng() >> (32 + rng() % 32)) | 1u;  // every bit length
+    const auto magnitude = static_cast<std::int64_t>(rng() >> (1 + rng() % 63));  // every bit length below 2^63
+    require_floor((rng() & 1) ? -magnitude : magnitude, d);
+  }
+  // The ends: both signs around multiples, the largest magnitudes, d = 1 and d = 2^32 - 1.
+  for (const std::uint32_t d : {1u, 2u, 3u, 256u, 65535u, 1073741568u, 2147483648u, 4294967295u}) {
+    for (const std::int64_t n : {std::int64_t{0}, std::int64_t{1}, std::int64_t{d} - 1, std::int64_t{d}, std::int64_t{d} + 1,
+                                 INT64_MAX, INT64_MAX - 1, (std::int64_t{d} << 30) - 1})
+      for (const std::int64_t signed_n : {n, -n}) require_floor(signed_n, d);
+  }
+  // Usable where the edge setup needs it, at compile time.
+  static_assert(fixedpoint::floor_div_wide(-7, 2).quotient == -4 && fixedpoint::floor_div_wide(-7, 2).remainder == 1);
+}

@@ -238,3 +238,14 @@ TEST_CASE("a small triangle's barycentric planes stay within small.hpp's stated 
   INFO("worst plane error " << r.worst_units << " units of 2^-26; small.hpp states at most 65");
   CHECK(r.worst_units <= 65.0);
 }
+
+TEST_CASE("divide_by_48 is x / 48 for every x of its range", "[span]") {
+  int wrong = 0;
+  for (int x = 0; x < (1 << 16); ++x) wrong += spanlight::divide_by_48(x) != x / 48;
+  REQUIRE(wrong == 0);
+  // Beyond the range the product overflows and the multiplier's excess shows (why log2_for
+  // clamps before dividing).
+  int beyond = 0;
+  for (int x = 1 << 17; x < (1 << 17) + 4096; ++x) beyond += spanlight::divide_by_48(x) != x / 48;
+  REQUIRE(beyond > 0);
+}

@@ -47,6 +47,24 @@ constexpr DivMod div_mod(std::uint64_t n, std::uint32_t d) {
   return {quotient, static_cast<std::uint32_t>(remainder)};
 }
 
+// floor(n / d) and n - floor(n / d) * d in [0, d), for any n > INT64_MIN and 0 < d < 2^32,
+// by two steps of long division with div_mod: the high word's remainder is below d, so the
+// second step's quotient is below 2^32 as div_mod requires. No 64-bit divide (on Cortex-M
+// that is a libgcc call, and M0+ has no divide at all).
+struct WideFloorDivMod {
+  std::int64_t quotient;
+  std::uint32_t remainder;
+};
+constexpr WideFloorDivMod floor_div_wide(std::int64_t n, std::uint32_t d) {
+  const std::uint64_t magnitude = n < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(n) : static_cast<std::uint64_t>(n);
+  const DivMod high = div_mod(magnitude >> 32, d);
+  const DivMod low = div_mod((std::uint64_t{high.remainder} << 32) | (magnitude & 0xFFFFFFFFu), d);
+  const auto q = static_cast<std::int64_t>((std::uint64_t{high.quotient} << 32) | low.quotient);  // <= |n| < 2^63
+  if (n >= 0) return {q, low.remainder};
+  if (low.remainder == 0) return {-q, 0};
+  return {-q - 1, d - low.remainder};
+}
+
 // n / d rounded to nearest, ties away from zero, for d > 0 and |n| < d * 2^32.
 constexpr std::int64_t divide_rounded(std::int64_t n, std::uint32_t d) {
   const std::uint64_t magnitude = n < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(n) : static_cast<std::uint64_t>(n);

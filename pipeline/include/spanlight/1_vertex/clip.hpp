@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
+#include "fixedpoint/divide.hpp"
 #include "spanlight/1_vertex/transform.hpp"
 #include "spanlight/features.hpp"
 
@@ -67,7 +68,11 @@ constexpr std::int32_t crossing(std::int64_t da, std::int64_t db) {
     num >>= excess;                    // rounded down and
     den = ((den - 1) >> excess) + 1;   // rounded up: t never passes the plane
   }
-  return static_cast<std::int32_t>((num << 30) / den);  // num <= den < 2^32: fits
+  // 0 <= num <= den <= 2^32, so the quotient is at most 2^30; div_mod takes a divisor below
+  // 2^32 without a 64-bit divide (a libgcc call on every Cortex-M), and den = 2^32 is a shift.
+  const std::uint64_t scaled = static_cast<std::uint64_t>(num) << 30;
+  if (den >> 32) return static_cast<std::int32_t>(scaled >> 32);
+  return static_cast<std::int32_t>(fixedpoint::div_mod(scaled, static_cast<std::uint32_t>(den)).quotient);
 }
 
 template <int P>
@@ -87,7 +92,7 @@ constexpr void clip_against(ClipPolygon<P>& poly, ClipPlane plane, std::int64_t 
   ClipPolygon<P> out{};
   for (int i = 0; i < poly.count; ++i) {
     const ClipVertex<P>& a = poly.v[i];
-    const ClipVertex<P>& b = poly.v[(i + 1) % poly.count];
+    const ClipVertex<P>& b = poly.v[i + 1 == poly.count ? 0 : i + 1];
     const std::int64_t da = plane_distance(plane, a.clip, guard);
     const std::int64_t db = plane_distance(plane, b.clip, guard);
     if (da >= 0) out.v[out.count++] = a;

@@ -10,15 +10,11 @@
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
+#include "fixedpoint/divide.hpp"
 #include "spanlight/1_vertex/project.hpp"
 #include "spanlight/scene.hpp"
 
 namespace spanlight {
-
-constexpr std::int64_t floor_div(std::int64_t n, std::int64_t d) {  // d > 0
-  const std::int64_t q = n / d;
-  return (n % d != 0 && n < 0) ? q - 1 : q;
-}
 
 // One edge a->b as a half-plane over pixel columns of a row:
 //   E(c) = slope * c + row_value >= bias,   E = dx*(py - ay) - dy*(px - ax),
@@ -44,11 +40,14 @@ struct Edge {
     row_step = 256 * dx;
     row_value = dx * (row0_centre_y - ay) - dy * (128 - ax);
     if (slope != 0) {
-      const std::int64_t d = slope > 0 ? slope : -slope;
-      quotient = floor_div(row_value - bias, d);
-      remainder = (row_value - bias) - quotient * d;
-      quotient_step = floor_div(row_step, d);
-      remainder_step = row_step - quotient_step * d;
+      // |slope| = 256 |dy| < 2^30, |row_value| < 2^45: exact floors without a 64-bit divide.
+      const auto d = static_cast<std::uint32_t>(slope > 0 ? slope : -slope);
+      const fixedpoint::WideFloorDivMod start = fixedpoint::floor_div_wide(row_value - bias, d);
+      const fixedpoint::WideFloorDivMod step = fixedpoint::floor_div_wide(row_step, d);
+      quotient = start.quotient;
+      remainder = start.remainder;
+      quotient_step = step.quotient;
+      remainder_step = step.remainder;
     } else {
       quotient = remainder = quotient_step = remainder_step = 0;
     }
@@ -73,11 +72,10 @@ struct Edge {
   constexpr void skip_rows(std::int32_t n) {
     row_value += row_step * n;
     if (slope != 0) {
-      const std::int64_t d = slope > 0 ? slope : -slope;
-      const std::int64_t carried = remainder + remainder_step * n;
-      const std::int64_t carry = carried / d;  // both >= 0
-      quotient += quotient_step * n + carry;
-      remainder = carried - carry * d;
+      const auto d = static_cast<std::uint32_t>(slope > 0 ? slope : -slope);
+      const fixedpoint::WideFloorDivMod carry = fixedpoint::floor_div_wide(remainder + remainder_step * n, d);
+      quotient += quotient_step * n + carry.quotient;
+      remainder = carry.remainder;
     }
   }
 
@@ -139,8 +137,8 @@ constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int height
   const std::int64_t centre_y = std::int64_t{r0} * 256 + 128;
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
   for (int i = 0; i < 3; ++i) {
-    const ScreenVertex& a = *v[(i + 1) % 3];
-    const ScreenVertex& b = *v[(i + 2) % 3];
+    const ScreenVertex& a = *v[i == 2 ? 0 : i + 1];  // (i + 1) mod 3 and (i + 2) mod 3, no divide on M0+
+    const ScreenVertex& b = *v[i == 0 ? 2 : i - 1];
     t.edge[i].start(a.x, a.y, b.x, b.y, centre_y);
   }
 

@@ -77,7 +77,7 @@ constexpr LodPlanes lod_planes(const TriangleSetup& t, const ScreenVertex* const
   std::int64_t pu[3], pv[3];
   std::uint64_t largest = 0;
   for (int m = 0; m < 3; ++m) {
-    const int i = (m + 1) % 3, k = (m + 2) % 3;
+    const int i = m == 2 ? 0 : m + 1, k = m == 0 ? 2 : m - 1;  // (m + 1) mod 3, (m + 2) mod 3: no divide on M0+
     const auto ww = static_cast<std::int64_t>(fixedpoint::mul_u32(t.omega[i], t.omega[k]) >> 31);
     pu[m] = ww * (std::int64_t{u[i]} - u[k]);
     pv[m] = ww * (std::int64_t{vv[i]} - vv[k]);

@@ -27,6 +27,11 @@
 
 namespace spanlight {
 
+// x / 48 for 0 <= x < 2^16 without a divide (M0+ has none): the product stays below 2^32, and
+// 43691 / 2^21 exceeds 1/48 by 1 / (3 * 2^21), so x * 43691 / 2^21 stays below x / 48 + 1/48,
+// short of the next multiple (span_test checks every x of the range).
+constexpr int divide_by_48(int x) { return static_cast<int>((static_cast<std::uint32_t>(x) * 43691u) >> 21); }
+
 // floor(log2 x) for x > 0.
 constexpr int floor_log2(std::uint64_t x) { return fixedpoint::bit_length(x) - 1; }
 
@@ -83,8 +88,13 @@ struct SegmentPlanner {
     return fixedpoint::mul_u32_u16(e_a, static_cast<std::uint32_t>(b - x)) + fixedpoint::mul_u32_u16(e_b, static_cast<std::uint32_t>(x - a));
   }
   constexpr int log2_for(std::uint64_t den_min) const {
-    const int k = (4 * log2_16_down(den_min) - accuracy16) / 48;  // a negative rounds toward 0, then clamps to 0
-    return k < 0 ? 0 : (k > max_log2 ? max_log2 : k);
+    // k = floor(x / 48) clamped to [0, max_log2]: the clamps need no quotient, and between them
+    // x < 48 (max_log2 + 1) <= 48 * 64 is within divide_by_48's range (max_log2 is at most the
+    // span knob's log2, 6).
+    const int x = 4 * log2_16_down(den_min) - accuracy16;
+    if (x < 48) return 0;
+    if (x >= 48 * (max_log2 + 1)) return max_log2;
+    return divide_by_48(x);
   }
 
   // log2 of the segment that starts at column x.

@@ -83,7 +83,7 @@ Mat4Block to_mat4_block(const glm::dmat4& m) {
 int uv_frac_bits_for(double largest_texel_coordinate) {
   if (largest_texel_coordinate < 1.0) return 16;
   const int integer_bits = static_cast<int>(std::floor(std::log2(largest_texel_coordinate))) + 1;
-  return std::clamp(29 - integer_bits, 8, 16);
+  return std::clamp(uv_value_bits - integer_bits, 8, 16);
 }
 
 // A repeating image with a side of one texel, doubled along that side: the

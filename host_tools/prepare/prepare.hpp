@@ -28,6 +28,7 @@ class PrepareError : public std::runtime_error {
 inline constexpr double position_limit = 16384.0;       // |object coordinate| < 2^14 units (Q15.16 with headroom)
 inline constexpr double texel_coordinate_limit = 2097152.0;  // |u * size| < 2^21 texels (8 sub-texel bits in 30)
 inline constexpr std::size_t vertex_limit = 65535;      // 16-bit indices
+inline constexpr int uv_value_bits = 29;               // |u * size| * 2^frac < 2^29: two uvs' difference fits int32 with a bit to spare
 inline constexpr int min_matrix_frac_bits = 16;         // entries below 2^13: clip coordinates stay in Q31.32
 
 // A texture's image in the sampler's layout (scene.hpp): its own storage and level table.

@@ -14,10 +14,6 @@ constexpr int clz64(std::uint64_t x) { return __builtin_clzll(x); }
 // Number of bits needed to hold |x| (0 for 0).
 constexpr int bit_length(std::uint64_t x) { return x == 0 ? 0 : 64 - clz64(x); }
 
-// Arithmetic shift right that is also defined for negative values in C++17
-// terms (C++20 makes >> on negatives arithmetic; this states the intent).
-constexpr std::int64_t asr64(std::int64_t x, int s) { return x >> s; }
-
 // 32x32 -> 64-bit products. ARMv6-M (Cortex-M0/M0+) multiplies 32x32 -> 32
 // only, so for `int64 * int64` the compiler calls libgcc's __muldi3 (a full
 // 64x64 product: about 40 instructions and a call) even when both factors are

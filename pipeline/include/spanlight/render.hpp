@@ -99,7 +99,10 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
   Light<DepthT> lights[projector_slots(P)] = {};
   for (int j = 0; j < scene.projector_count; ++j) {
     const ProjectorData& p = scene.projectors[j];
-    lights[j] = {&p, &scene.textures[p.texture], nullptr, p.falloff >= 0 ? &scene.textures[p.falloff] : nullptr};
+    lights[j] = {.projector = &p,
+                 .image = &scene.textures[p.texture],
+                 .shadow_map = nullptr,  // set once the map is drawn, below
+                 .falloff = p.falloff >= 0 ? &scene.textures[p.falloff] : nullptr};
     if constexpr (F.shadows) {
       if (!p.shadows) continue;
       const std::span<DepthT> map = target.shadow_maps[static_cast<std::size_t>(j)];

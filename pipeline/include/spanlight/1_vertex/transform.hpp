@@ -14,8 +14,6 @@ namespace spanlight {
 using fixedpoint::Mat4Block;
 using fixedpoint::Vec4Wide;
 
-inline constexpr int position_frac_bits = 16;
-
 // Positions are stored as x, y, z triples of Q15.16 in the scene's arrays.
 constexpr Vec4Wide transform(const Mat4Block& mat, const std::int32_t* position) {
   return fixedpoint::transform(mat, fixedpoint::Vec3Q16{position[0], position[1], position[2]});

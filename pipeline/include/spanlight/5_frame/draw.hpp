@@ -158,7 +158,13 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     // Q3.28 units per texel of the larger side: 2^28 / size, rounded down in log2.
     projector_texel_bits[j] = static_cast<std::uint8_t>(proj_frac_bits - fixedpoint::bit_length(projector_texels[j] - 1u));  // 1 texel: 0 bits
   }
-  SpanControl control{knobs.span_log2, knobs.tolerance_log2, nullptr, 8, projector_texels, projector_texel_bits, z_limit};
+  SpanControl control{.span_log2 = knobs.span_log2,
+                      .tolerance_log2 = knobs.tolerance_log2,
+                      .uv = nullptr,  // per object, below
+                      .uv_frac_bits = 8,
+                      .projector_texels = projector_texels,
+                      .projector_texel_bits = projector_texel_bits,
+                      .z_limit = z_limit};
   const int pc = scene.projector_count;
   const bool banded = view.row_begin > 0 || view.row_end < view.height;  // a whole frame needs no row test
 

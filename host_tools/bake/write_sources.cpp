@@ -91,8 +91,9 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << ",\n    .repeat_sizes = {" << int(f.repeat_sizes[0]) << ", " << int(f.repeat_sizes[1]) << ", " << int(f.repeat_sizes[2])
       << ", " << int(f.repeat_sizes[3]) << "}, .any_repeat_size = " << boolean(f.any_repeat_size) << "};\n"
       << "// As `spanlight render` takes them: " << knob_command_line(knobs) << "\n"
-      << "inline constexpr spanlight::Knobs knobs{" << int(knobs.span_log2) << ", " << int(knobs.tolerance_log2) << ", "
-      << int(knobs.table_bits) << ", " << int(knobs.newton) << ", " << int(knobs.depth_bits) << ", features.format, spanlight::Passes::"
+      << "inline constexpr spanlight::Knobs knobs{.span_log2 = " << int(knobs.span_log2) << ", .tolerance_log2 = "
+      << int(knobs.tolerance_log2) << ", .table_bits = " << int(knobs.table_bits) << ", .newton = " << int(knobs.newton)
+      << ", .depth_bits = " << int(knobs.depth_bits) << ",\n    .format = features.format, .passes = spanlight::Passes::"
       << (knobs.passes == Passes::fused ? "fused" : "multipass") << "};\n"
       << "using Depth = " << (knobs.depth_bits <= 16 ? "std::uint16_t" : "std::uint32_t") << ";\n\n"
       << "inline constexpr const char* scene_name = " << cpp_string_literal(scene_name) << ";\n"

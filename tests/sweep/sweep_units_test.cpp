@@ -3,7 +3,10 @@
 // the flash classification of symbol names, RGB565 rounding and coordinate errors.
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <cxxabi.h>
 #include <set>
+#include <typeinfo>
 
 #include <catch2/catch.hpp>
 
@@ -22,6 +25,20 @@ using namespace spanlight;
 using namespace spanlight::sweep;
 
 namespace {
+
+template <spanlight::Features F>
+struct Instantiated {};
+
+// A Features literal as the demangler writes it (nm -C and __cxa_demangle share libiberty's):
+// from the type system, so a field added to Features shows here, not in a stale string.
+template <spanlight::Features F>
+std::string demangled_instantiation() {
+  int status = 0;
+  char* text = abi::__cxa_demangle(typeid(Instantiated<F>).name(), nullptr, nullptr, &status);
+  std::string name = status == 0 && text != nullptr ? text : "";
+  std::free(text);
+  return name;
+}
 
 GridSpec one_value_grid() {  // every knob at its default
   GridSpec grid;
@@ -188,6 +205,24 @@ TEST_CASE("flash: symbols are sorted into shared, per instantiation, tables, and
   // The bench's per-pass copy (its hooks type lives in an anonymous namespace): not counted.
   CHECK(classify_symbol("void spanlight::FusedKernel<" + features + ", unsigned long, (anonymous namespace)::PassRegions>"
                         "::run<1>(unsigned long, long, spanlight::PixelRun<1> const&) const", b, n).empty());
+  // The same from names the compiler makes, for every reciprocal the bench builds.
+  constexpr auto with = [](int table_bits, int newton) {
+    Features f;
+    f.table_bits = static_cast<std::uint8_t>(table_bits);
+    f.newton = static_cast<std::uint8_t>(newton);
+    return f;
+  };
+  const std::pair<std::string, std::pair<int, int>> made[] = {
+      {demangled_instantiation<with(6, 0)>(), {6, 0}},
+      {demangled_instantiation<with(8, 1)>(), {8, 1}},
+      {demangled_instantiation<with(12, 1)>(), {12, 1}},
+  };
+  for (const auto& [name, expected] : made) {
+    INFO(name);
+    b = n = -1;
+    CHECK(classify_symbol("void spanlight::draw_pass<" + name.substr(name.find('<') + 1), b, n) == "instantiation");
+    CHECK((b == expected.first && n == expected.second));
+  }
   CHECK(classify_symbol("fixedpoint::reciprocal_table<12>", b, n) == "table");
   CHECK(b == 12);
   CHECK(classify_symbol("spanlight::setup_triangle(spanlight::ScreenVertex const (&) [3], spanlight::Cull, int, spanlight::TriangleSetup&) [clone .isra.0]", b, n) == "shared");

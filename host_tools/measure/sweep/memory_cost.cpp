@@ -12,8 +12,10 @@ namespace spanlight::sweep {
 namespace {
 
 // The fields of a demangled Features literal ("spanlight::Features{(unsigned char)4, true, ...}")
-// come in the struct's order, trailing zero fields left out. table_bits and newton follow the
-// pixel format and the two pass flags (features.hpp), so they are found from the format's field.
+// come in the struct's order, trailing zero fields left out: symbol names are all a linked image
+// tells of which instantiation a function belongs to. table_bits and newton follow the pixel
+// format and the two pass flags (features.hpp), so they are found from the format's field;
+// sweep_units_test reads names the compiler itself makes, so a reordered Features fails there.
 constexpr std::size_t table_bits_after_format = 3, newton_after_format = 4;
 
 int field_value(const std::string& text) {

@@ -5,7 +5,9 @@
 // command line with it.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string_view>
 
 namespace spanlight {
@@ -44,16 +46,17 @@ inline constexpr const char* passes[] = {"fused", "multipass"};
 }  // namespace knob_values
 
 inline constexpr KnobInfo knob_table[] = {
-    {"span", "most pixels between exact perspective divides", knob_values::span, 7},
+    {"span", "most pixels between exact perspective divides", knob_values::span, std::size(knob_values::span)},
     {"tolerance", "shorten segments so linear stepping drifts at most 2^-N texel from the exact value (0: never)",
-     knob_values::tolerance, 11},
+     knob_values::tolerance, std::size(knob_values::tolerance)},
     {"table-bits", "reciprocal table index bits (6 with --newton 0 renders at about 20 dB: see docs/reciprocal.md)",
-     knob_values::table_bits, 4},
-    {"newton", "Newton-Raphson steps after the reciprocal table", knob_values::newton, 3},
-    {"depth-bits", "depth buffer and shadow map bits", knob_values::depth_bits, 2},
+     knob_values::table_bits, std::size(knob_values::table_bits)},
+    {"newton", "Newton-Raphson steps after the reciprocal table", knob_values::newton, std::size(knob_values::newton)},
+    {"depth-bits", "depth buffer and shadow map bits", knob_values::depth_bits, std::size(knob_values::depth_bits)},
     {"format", "framebuffer format (rgb565-be: RGB565 with its two bytes swapped, as SPI displays take it)",
-     knob_values::format, 3},
-    {"passes", "fused: one pass per pixel; multipass: the paper's passes (the same bytes)", knob_values::passes, 2},
+     knob_values::format, std::size(knob_values::format)},
+    {"passes", "fused: one pass per pixel; multipass: the paper's passes (the same bytes)", knob_values::passes,
+     std::size(knob_values::passes)},
 };
 
 enum class KnobError : std::uint8_t { ok, unknown_name, bad_value };
@@ -87,21 +90,28 @@ constexpr KnobError set_knob(Knobs& knobs, std::string_view name, std::string_vi
 
 // The value of one knob as typed (the inverse of set_knob), for reports and baked configurations.
 constexpr const char* knob_value(const Knobs& knobs, std::string_view name) {
-  if (name == "span") return knob_values::span[knobs.span_log2 <= 6 ? knobs.span_log2 : 0];
-  if (name == "tolerance") return knob_values::tolerance[knobs.tolerance_log2 <= 10 ? knobs.tolerance_log2 : 0];
-  if (name == "table-bits") return knob_values::table_bits[(knobs.table_bits - 6) / 2 & 3];
-  if (name == "newton") return knob_values::newton[knobs.newton <= 2 ? knobs.newton : 0];
+  // An index past its list (a Knobs built by hand: knobs_valid says so) reads the first value.
+  auto pick = [](const auto& values, unsigned index) { return values[index < std::size(values) ? index : 0]; };
+  if (name == "span") return pick(knob_values::span, knobs.span_log2);
+  if (name == "tolerance") return pick(knob_values::tolerance, knobs.tolerance_log2);
+  if (name == "table-bits") return pick(knob_values::table_bits, (knobs.table_bits - 6u) / 2u);
+  if (name == "newton") return pick(knob_values::newton, knobs.newton);
   if (name == "depth-bits") return knobs.depth_bits == 16 ? "16" : "24";
-  if (name == "format") return knob_values::format[static_cast<int>(knobs.format) % 3];
-  if (name == "passes") return knob_values::passes[static_cast<int>(knobs.passes) & 1];
+  if (name == "format") return pick(knob_values::format, static_cast<unsigned>(knobs.format));
+  if (name == "passes") return pick(knob_values::passes, static_cast<unsigned>(knobs.passes));
   return "";
 }
 
-// Whether every field holds one of its allowed values (a Knobs built by hand may not).
+// Whether every field holds one of its allowed values (a Knobs built by hand may not): the
+// field is an index into its value list (span, tolerance, newton, format, passes), or
+// table_bits = 6 + 2 * index, or depth 16 or 24. Checked per frame, so no string compares.
 constexpr bool knobs_valid(const Knobs& k) {
-  return k.span_log2 <= 6 && k.tolerance_log2 <= 10 && (k.table_bits == 6 || k.table_bits == 8 ||
-         k.table_bits == 10 || k.table_bits == 12) && k.newton <= 2 && (k.depth_bits == 16 || k.depth_bits == 24) &&
-         static_cast<int>(k.format) <= 2 && static_cast<int>(k.passes) <= 1;
+  const unsigned table_index = (k.table_bits - 6u) / 2u;  // wraps to a large value below 6
+  return k.span_log2 < std::size(knob_values::span) && k.tolerance_log2 < std::size(knob_values::tolerance) &&
+         k.table_bits % 2 == 0 && table_index < std::size(knob_values::table_bits) &&
+         k.newton < std::size(knob_values::newton) && (k.depth_bits == 16 || k.depth_bits == 24) &&
+         static_cast<std::size_t>(k.format) < std::size(knob_values::format) &&
+         static_cast<std::size_t>(k.passes) < std::size(knob_values::passes);
 }
 
 // Parses `--name value` pairs (argv style); stops at the first error and says where.

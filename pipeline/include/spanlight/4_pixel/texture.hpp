@@ -60,9 +60,17 @@ struct BilinearSums {
   const std::uint32_t h_bottom = bytes_0_2(t01) * ifx + bytes_0_2(t11) * fx;
   const std::uint32_t a = bytes_1_3(h_top) * ify + bytes_1_3(h_bottom) * fy;
   const std::uint32_t b = bytes_0_2(h_top) * ify + bytes_0_2(h_bottom) * fy;
+#if FIXEDPOINT_HAS_DSP
+  // Both greens in one register's lanes, then one dual multiply-add (uxtb16, uxtab16, smuad).
   const std::uint32_t weights = ifx | (fx << 16);
   const std::uint32_t g_top = fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t00, t10), weights);
   const std::uint32_t g_bottom = fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t01, t11), weights);
+#else
+  // Without lane instructions green is weighted where it sits: (g << 8) w < 2^24, and both
+  // terms are multiples of 256, so the shift gives g00 ifx + g10 fx exactly, the same sum.
+  const std::uint32_t g_top = ((t00 & 0xFF00u) * ifx + (t10 & 0xFF00u) * fx) >> 8;
+  const std::uint32_t g_bottom = ((t01 & 0xFF00u) * ifx + (t11 & 0xFF00u) * fx) >> 8;
+#endif
   return {a, b, g_top * ify + g_bottom * fy};
 }
 

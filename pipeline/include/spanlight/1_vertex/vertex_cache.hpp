@@ -30,6 +30,26 @@ constexpr std::uint8_t outside_planes(const Vec4Wide& c, std::int64_t guard) {
   return bits;
 }
 
+// Whether a whole object lies beyond one clip plane, from its bounding box: then every vertex
+// is beyond that plane, so no triangle of it can show and none need be transformed. Every
+// point of the box is a convex combination of its corners; the computed distance of a point
+// differs from the linear one by under guard + 2 units (clip coordinates rounded to Q.32, the
+// guard planes' quarter-unit floors), so corners beyond by more than 2 (guard + 2) leave every
+// vertex beyond too. Eight transforms: worth it for objects of more vertices than that.
+constexpr bool object_beyond_a_plane(const Bounds& box, const Mat4Block& to_clip, std::int64_t guard) {
+  const std::int64_t margin = 2 * (guard + 2);
+  unsigned beyond_all = 0x3Fu;
+  for (unsigned corner = 0; corner < 8 && beyond_all != 0; ++corner) {
+    const std::int32_t p[3] = {(corner & 1u) ? box.max[0] : box.min[0], (corner & 2u) ? box.max[1] : box.min[1],
+                               (corner & 4u) ? box.max[2] : box.min[2]};
+    const Vec4Wide c = transform(to_clip, p);
+    unsigned beyond = 0;
+    for (int k = 0; k < 6; ++k) beyond |= plane_distance(clip_planes[k], c, guard) < -margin ? 1u << k : 0u;
+    beyond_all &= beyond;
+  }
+  return beyond_all != 0;
+}
+
 inline void cache_vertices(const ObjectData& object, const Mat4Block& to_clip, int width, int height, std::int64_t guard,
                            CachedVertex* out) {
   for (std::uint32_t i = 0; i < object.vertex_count; ++i) {

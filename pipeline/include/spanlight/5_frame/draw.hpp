@@ -176,6 +176,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     const Mat4Block& to_clip = view.light_projector < 0 ? matrices.clip_from_object[o]
                                                         : matrices.light_clip_from_object[o * pc + view.light_projector];
     const Mat4Block* to_projector = matrices.projector_from_object + o * pc;
+    if (object.vertex_count > 8 && object_beyond_a_plane(object.bounds, to_clip, guard)) continue;
     const bool small_allowed = small_path_allowed(scene, object, view);
     cache_vertices(object, to_clip, view.width, view.height, guard, cache);
 

@@ -8,15 +8,12 @@
 
 #include "sweep/report_tables.hpp"
 #include "bake/knob_text.hpp"
+#include "io/number_text.hpp"
 
 namespace spanlight::analyze {
 namespace {
 
-std::string num(double v) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
+std::string num(double v) { return io::number_text("%.6g", v); }
 
 std::string interval(const Interval& i) { return i.empty ? std::string("none") : std::string("[") + num(i.lo) + ", " + num(i.hi) + "]"; }
 

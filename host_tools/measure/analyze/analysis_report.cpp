@@ -129,7 +129,7 @@ std::string proposal_text(const sweep::SweepResult& r, const Proposal& p, const 
                 sweep::label(row.point).c_str(), std::isinf(row.psnr_db) ? "inf" : num(row.psnr_db).c_str(), row.max_lsb,
                 row.mean_lsb, row.pct_over_2, row.pct_over_8, row.texcoord_err_max());
   out << line;
-  if (row.point.filter != sweep::FilterChoice::scene) {
+  if (row.point.filter != FilterChoice::scene) {
     std::snprintf(line, sizeof line, "  against the scene as authored (filters as written): PSNR %s dB, max %.0f LSB\n",
                   std::isinf(row.psnr_vs_scene_db) ? "inf" : num(row.psnr_vs_scene_db).c_str(), row.max_vs_scene_lsb);
     out << line;

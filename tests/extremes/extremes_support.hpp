@@ -5,7 +5,7 @@
 // from the float model by sub-pixel amounts: its snapped vertices can sit one
 // 1/256 px step away from the float model's (the divide is good to 2^-7
 // subpixel before rounding, project.hpp), its texture coordinates by up to
-// 2^-span_tolerance_log2 texel (span.hpp), and its colour steps round in
+// 2^-span_tolerance_log2 texel (3_span/segments.hpp), and its colour steps round in
 // 8-bit levels (shade.hpp). Each of these moves an edge of the picture (a
 // silhouette, a texel boundary, a shadow or frustum boundary) by less than a
 // pixel, or changes a colour by a few levels. So a pixel may differ by more
@@ -120,7 +120,7 @@ inline std::vector<sc::Object> room(glm::dvec3 lo, glm::dvec3 hi) {
 using test_support::projector;
 
 // Rounds every object-space position to the Q15.16 grid the fixed pipeline
-// stores (prepared_scene.hpp: positions are Q15.16), so both renderers draw
+// stores (spanlight/scene.hpp: positions are Q15.16), so both renderers draw
 // the same geometry and a comparison measures the pipeline's arithmetic, not
 // the input format. (What the format itself costs is bounded in docs/limits.md.)
 inline void snap_positions_to_q16(sc::Scene& s) {

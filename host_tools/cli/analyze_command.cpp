@@ -34,7 +34,7 @@ struct AnalyzeArgs {
 sweep::SweepResult measure(const scene::Scene& scene, const AnalyzeArgs& a) {
   if (!a.sweep_csv.empty()) return sweep::read_csv(a.sweep_csv);
   sweep::SweepOptions o;
-  if (!a.allow_filter_change) o.grid.filters = {sweep::FilterChoice::scene};
+  if (!a.allow_filter_change) o.grid.filters = {FilterChoice::scene};
   else o.grid.filters.clear();
   for (std::size_t i = 0; i < std::size(knob_table); ++i)
     if (std::string_view(knob_table[i].name) == "format") o.grid.values[i] = {a.format};
@@ -82,7 +82,7 @@ int run_analyze(const AnalyzeArgs& a) {
 
   const sweep::SweepRow& row = result.rows[*proposal.row];
   std::printf("\nBake it with:\n  %s\n", analyze::bake_command_line(a.scene, row.point.knobs).c_str());
-  if (row.point.filter != sweep::FilterChoice::scene)
+  if (row.point.filter != FilterChoice::scene)
     std::printf("  (the proposal forces every texture to %s: bake --config applies that; a plain bake keeps the scene's filters)\n",
                 sweep::to_string(row.point.filter));
   if (!a.write_config.empty()) {

@@ -1,6 +1,5 @@
 #include "cli/render_animation.hpp"
 
-#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -21,13 +20,6 @@ std::string frame_file(const char* backend, std::uint32_t frame) {
   char name[32];
   std::snprintf(name, sizeof name, "%s/frame_%04u.png", backend, static_cast<unsigned>(frame));
   return name;
-}
-
-std::string psnr_text(double db) {
-  if (std::isinf(db)) return "inf";
-  char text[32];
-  std::snprintf(text, sizeof text, "%.2f", db);
-  return text;
 }
 
 }  // namespace
@@ -68,8 +60,8 @@ int run_render_animation(const AnimationRender& a) {
       const double db = compare::compare_images(compare::Rgb8View{scene->width, scene->height, fixed_rgb},
                                                 compare::Rgb8View{scene->width, scene->height, float_rgb})
                             .psnr_db;
-      std::printf("frame %04u: PSNR fixed vs float %s dB\n", static_cast<unsigned>(k), psnr_text(db).c_str());
-      csv += std::to_string(k) + "," + psnr_text(db) + "\n";
+      std::printf("frame %04u: PSNR fixed vs float %s dB\n", static_cast<unsigned>(k), compare::psnr_text(db).c_str());
+      csv += std::to_string(k) + "," + compare::psnr_text(db) + "\n";
       if (k == 0 || db < worst_db) {
         worst_db = db;
         worst_frame = k;
@@ -80,7 +72,7 @@ int run_render_animation(const AnimationRender& a) {
   if (floating) out.remove_earlier_files_under("float");
   if (fixed && floating) {
     out.write("compare/psnr.csv", csv);
-    std::printf("worst frame %04u: PSNR %s dB\n", static_cast<unsigned>(worst_frame), psnr_text(worst_db).c_str());
+    std::printf("worst frame %04u: PSNR %s dB\n", static_cast<unsigned>(worst_frame), compare::psnr_text(worst_db).c_str());
   }
   std::printf("rendered %u frame(s) of %s into %s\n", static_cast<unsigned>(animation->animation.frame_count),
               scene->name.c_str(), a.out.c_str());

@@ -1,5 +1,6 @@
 // spanlight sweep SCENE.json --out DIR [grid and measurement options]
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,13 @@ struct SweepArgs {
   int repeats = 3, jobs = 2, pictures = 4;
   bool no_per_pass = false, quiet = false, force = false;
 };
+
+// --filters' words: all, then every FilterChoice (spanlight/knobs.hpp).
+std::vector<std::string> filter_words() {
+  std::vector<std::string> words{"all"};
+  words.insert(words.end(), std::begin(knob_values::filter), std::end(knob_values::filter));
+  return words;
+}
 
 sweep::SweepOptions to_options(const SweepArgs& a) {
   sweep::SweepOptions o;
@@ -96,7 +104,7 @@ Command add_sweep_command(CLI::App& app) {
   cmd->add_option("--filters", a->filters,
                   "texture filters: scene (as the scene says), nearest or bilinear (forced on every texture), "
                   "all (scene plus each forced filter that changes the scene)")
-      ->check(CLI::IsMember({"all", "scene", "nearest", "bilinear"}))->delimiter(',');
+      ->check(CLI::IsMember(filter_words()))->delimiter(',');
   cmd->add_option("--repeats", a->repeats, "host renders per configuration; the fastest counts")->check(CLI::Range(1, 50));
   cmd->add_option("--qemu-grid", a->qemu_grid,
                   "QEMU runs: cost (the default table and depth bits only, reused for the rest), full, or none")

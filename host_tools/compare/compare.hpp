@@ -68,6 +68,8 @@ std::string to_json(const CompareResult& result);
 std::string to_text(const CompareResult& result);
 // All figures on one line, for logs.
 std::string to_one_line(const CompareResult& result);
+// A PSNR as the reports print it: two decimals, "inf" for identical images.
+std::string psnr_text(double psnr_db);
 
 // An 8-bit RGB image (top row first) encoded as PNG, in memory: the bytes a
 // command hands to io::write_file_atomically. Throws CompareError.

@@ -53,14 +53,8 @@ CompareResult compare_buffers(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b) 
 }  // namespace
 
 CompareResult compare_images(const std::filesystem::path& a, const std::filesystem::path& b) {
-  const OIIO::ImageBuf image_a = read_rgb(a);  // a first: an error names the first bad file
-  const OIIO::ImageBuf image_b = read_rgb(b);
-  try {
-    require_same_size(image_a, image_b);
-  } catch (const CompareError& e) {
-    throw CompareError(a.string() + " and " + b.string() + ": " + e.what());
-  }
-  return compare_buffers(image_a, image_b);
+  const ImagePair images = read_same_size(a, b);
+  return compare_buffers(images.a, images.b);
 }
 
 CompareResult compare_images(Rgb8View a, Rgb8View b) { return compare_buffers(to_image_buf(a), to_image_buf(b)); }

@@ -55,14 +55,8 @@ std::array<std::uint8_t, 3> heat_map_colour(int lsb) {
 }
 
 io::Rgb8Image heat_map(const std::filesystem::path& a, const std::filesystem::path& b) {
-  const OIIO::ImageBuf image_a = read_rgb(a);
-  const OIIO::ImageBuf image_b = read_rgb(b);
-  try {
-    require_same_size(image_a, image_b);
-  } catch (const CompareError& e) {
-    throw CompareError(a.string() + " and " + b.string() + ": " + e.what());
-  }
-  return heat_map_of(image_a, image_b);
+  const ImagePair images = read_same_size(a, b);
+  return heat_map_of(images.a, images.b);
 }
 
 io::Rgb8Image heat_map(Rgb8View a, Rgb8View b) { return heat_map_of(to_image_buf(a), to_image_buf(b)); }

@@ -1,24 +1,16 @@
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "compare/compare.hpp"
+#include "io/number_text.hpp"
 
 namespace spanlight::compare {
 
-namespace {
+using io::number_text;
 
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
-
-std::string psnr_text(double psnr_db) { return std::isinf(psnr_db) ? "inf" : format("%.2f", psnr_db); }
-
-}  // namespace
+std::string psnr_text(double psnr_db) { return std::isinf(psnr_db) ? "inf" : number_text("%.2f", psnr_db); }
 
 std::string to_json(const CompareResult& r) {
   nlohmann::ordered_json json;
@@ -36,16 +28,16 @@ std::string to_json(const CompareResult& r) {
 std::string to_text(const CompareResult& r) {
   return "size            " + std::to_string(r.width) + " x " + std::to_string(r.height) + "\n" +
          "PSNR            " + psnr_text(r.psnr_db) + " dB\n" +
-         "max |diff|      " + format("%g", r.max_abs_lsb) + " LSB\n" +
-         "mean |diff|     " + format("%.3f", r.mean_abs_lsb) + " LSB\n" +
-         "pixels > 2 LSB  " + format("%.2f", r.pct_over_2_lsb) + " %\n" +
-         "pixels > 8 LSB  " + format("%.2f", r.pct_over_8_lsb) + " %\n";
+         "max |diff|      " + number_text("%g", r.max_abs_lsb) + " LSB\n" +
+         "mean |diff|     " + number_text("%.3f", r.mean_abs_lsb) + " LSB\n" +
+         "pixels > 2 LSB  " + number_text("%.2f", r.pct_over_2_lsb) + " %\n" +
+         "pixels > 8 LSB  " + number_text("%.2f", r.pct_over_8_lsb) + " %\n";
 }
 
 std::string to_one_line(const CompareResult& r) {
   return std::to_string(r.width) + "x" + std::to_string(r.height) + "  PSNR " + psnr_text(r.psnr_db) + " dB  max " +
-         format("%g", r.max_abs_lsb) + " LSB  mean " + format("%.3f", r.mean_abs_lsb) + " LSB  >2 LSB " +
-         format("%.2f", r.pct_over_2_lsb) + "%  >8 LSB " + format("%.2f", r.pct_over_8_lsb) + "%";
+         number_text("%g", r.max_abs_lsb) + " LSB  mean " + number_text("%.3f", r.mean_abs_lsb) + " LSB  >2 LSB " +
+         number_text("%.2f", r.pct_over_2_lsb) + "%  >8 LSB " + number_text("%.2f", r.pct_over_8_lsb) + "%";
 }
 
 }  // namespace spanlight::compare

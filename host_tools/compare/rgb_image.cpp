@@ -50,4 +50,14 @@ void require_same_size(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b) {
   }
 }
 
+ImagePair read_same_size(const std::filesystem::path& a, const std::filesystem::path& b) {
+  ImagePair pair{read_rgb(a), read_rgb(b)};  // braces: a is read first
+  try {
+    require_same_size(pair.a, pair.b);
+  } catch (const CompareError& e) {
+    throw CompareError(a.string() + " and " + b.string() + ": " + e.what());
+  }
+  return pair;
+}
+
 }  // namespace spanlight::compare

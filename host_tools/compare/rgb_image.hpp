@@ -25,4 +25,13 @@ io::Rgb8Image to_rgb8(const OIIO::ImageBuf& image);
 // Throws CompareError unless both images have the same size.
 void require_same_size(const OIIO::ImageBuf& a, const OIIO::ImageBuf& b);
 
+// Two files to set side by side, read as read_rgb reads them.
+struct ImagePair {
+  OIIO::ImageBuf a, b;
+};
+
+// Reads a, then b (an error names the first bad file); throws CompareError naming
+// both files when their sizes differ.
+ImagePair read_same_size(const std::filesystem::path& a, const std::filesystem::path& b);
+
 }  // namespace spanlight::compare

@@ -5,10 +5,12 @@
 //   clip.hpp        near/far planes in clip space, fan triangulation
 //   setup.hpp       window coordinates, snap to 1/256 px, edge functions, top-left rule
 //   raster.hpp      covered pixels, depth and perspective-correct weights
+//   scene_geometry.hpp  every object's triangles or fragments, in file order, for any pass
 //   sample.hpp      nearest/bilinear/trilinear texels, wrap modes, t = 0 at the bottom, falloff
 //   shadow_map.hpp  depth maps from the projectors, nearest and pcf2x2 compares
 //   facing.hpp      facing_only: which projectors a triangle faces
 //   shade.hpp       light * surface
+//   visibility.hpp  the eye's depth pass: the nearest surface per pixel
 //   render.cpp      the frame: shadow passes, visibility, shading
 #pragma once
 

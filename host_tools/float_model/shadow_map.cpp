@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "float_model/raster.hpp"
-#include "float_model/transform.hpp"
+#include "float_model/scene_geometry.hpp"
 
 namespace spanlight::float_model {
 
@@ -19,17 +18,15 @@ ShadowMap render_shadow_map(const scene::Scene& scene, const scene::Projector& p
   const int size = projector.shadows ? projector.shadows->map_size : 0;
   ShadowMap map{size, std::vector<double>(static_cast<std::size_t>(size) * static_cast<std::size_t>(size), 1.0)};
   const Viewport viewport{size, size};
-  const auto keep_nearest = [&](const ClipTriangle&, const Fragment& fragment) {
+  const auto keep_nearest = [&](MeshTriangle, const ClipTriangle&, const Fragment& fragment) {
     double& stored = map.depth[static_cast<std::size_t>(fragment.y) * static_cast<std::size_t>(size) +
                                static_cast<std::size_t>(fragment.x)];
     if (fragment.depth < stored) stored = fragment.depth;
   };
-  for (const scene::Object& object : scene.objects) {
-    const ObjectTransform transform = projector_depth_transform(scene.camera, projector, object);
-    for (std::size_t i = 0; i < object.mesh.triangles.size(); ++i) {
-      draw_triangle(transform_triangle(transform, object.mesh, i), viewport, object.cull, keep_nearest);
-    }
-  }
+  const auto from_projector = [&](const scene::Object& object) {
+    return projector_depth_transform(scene.camera, projector, object);
+  };
+  for_each_fragment(scene, viewport, from_projector, keep_nearest);
   return map;
 }
 

@@ -150,7 +150,7 @@ TEST_CASE("bias 0: shadows still fall where they should - self-shadowing is the 
   // With bias 0 a surface compares its own r/q with the depth the map stored
   // for it: equal in real arithmetic, so either side of the compare in
   // practice. The map keeps the top 24 bits of the depth by truncation
-  // (buffers.hpp, depth_store), which puts D up to one step below the
+  // (4_pixel/depth.hpp, DepthFormat::store), which puts D up to one step below the
   // surface's own r/q: lit surfaces may shadow themselves ("acne") where the
   // r/q interpolated at the pixel exceeds the truncated D. What must hold:
   //  - the occluder's shadow on the floor (the floor is > 0.2 window-depth

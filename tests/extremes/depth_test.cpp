@@ -4,7 +4,7 @@
 // Window depth is z_w = f (z - n) / ((f - n) z) for a surface at distance z
 // (spec: (z/w + 1) / 2), so 1 - z_w = n (f - z) / ((f - n) z) and the gap
 // between two surfaces dz apart is about n dz / z^2. The depth buffer keeps
-// the top depth_bits of the Q1.30 value (buffers.hpp, depth_store: truncation),
+// the top depth_bits of the Q1.30 value (4_pixel/depth.hpp, DepthFormat::store: truncation),
 // and is cleared to all ones.
 #include <catch2/catch.hpp>
 
@@ -73,7 +73,7 @@ TEST_CASE("16-bit depth over a deep range: z-fighting picks one surface per pixe
   // to the same stored value over most of the square and the first drawn
   // wins those ties (depth test `less`). Either way each pixel shows exactly
   // one surface's colour, lit once: the light and modulate passes claim a
-  // pixel once (buffers.hpp, tie mask).
+  // pixel once (4_pixel/depth.hpp, the tie mask).
   sc::Scene s = facing(0.01, 1000.0);
   s.objects.push_back(square_at("behind", 60.5, 0.25, glm::dvec3(0.9, 0.3, 0.2)));  // drawn first
   s.objects.push_back(square_at("front", 60.0, 0.25, glm::dvec3(0.2, 0.5, 0.9)));  // the same outline on screen
@@ -119,7 +119,7 @@ TEST_CASE("16-bit depth over a deep range: z-fighting picks one surface per pixe
 
 TEST_CASE("window depth near 1: a surface in the last depth step before the far plane is drawn like any other",
           "[extremes][depth]") {
-  // Regression (found by this suite, fixed; docs/limits.md): depth_store (buffers.hpp) truncates the Q1.30 depth to
+  // Regression (found by this suite, fixed; docs/limits.md): DepthFormat::store (4_pixel/depth.hpp) truncates the Q1.30 depth to
   // depth_bits and clamps it to depth_clear(bits), the value the buffer is
   // cleared to. A fragment with 1 - z_w < 2^-depth_bits therefore stores the
   // clear value and the depth pass (`d < Z`) drops it; the z-equal passes

@@ -5,7 +5,7 @@
 // from the float model by sub-pixel amounts: its snapped vertices can sit one
 // 1/256 px step away from the float model's (the divide is good to 2^-7
 // subpixel before rounding, project.hpp), its texture coordinates by up to
-// 2^-span_tolerance_log2 texel (span.hpp), and its colour steps round in
+// 2^-span_tolerance_log2 texel (3_span/segments.hpp), and its colour steps round in
 // 8-bit levels (shade.hpp). Each of these moves an edge of the picture (a
 // silhouette, a texel boundary, a shadow or frustum boundary) by less than a
 // pixel, or changes a colour by a few levels. So a pixel may differ by more
@@ -35,6 +35,7 @@
 #include "prepare/render_fixed.hpp"
 #include "scene/scene.hpp"
 #include "spanlight/render.hpp"
+#include "../support/scene_builders.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define SPANLIGHT_XT_SANITIZED 1
@@ -53,11 +54,7 @@ inline constexpr bool sanitized = SPANLIGHT_XT_SANITIZED != 0;
 
 // ---- images ---------------------------------------------------------------------
 
-inline sc::Image solid_image(int width, int height, std::array<std::uint8_t, 3> rgb) {
-  sc::Image image{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3)};
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = rgb[i % 3];
-  return image;
-}
+using test_support::solid_image;
 
 // Squares of `cell` texels, alternately `a` and `b`; texel (0, 0) (top-left) is `a`.
 inline sc::Image checker_image(int width, int height, int cell, std::array<std::uint8_t, 3> a = {255, 255, 255},
@@ -72,21 +69,13 @@ inline sc::Image checker_image(int width, int height, int cell, std::array<std::
   return image;
 }
 
-inline sc::Texture texture(std::string name, sc::Image image, sc::Filter filter, sc::Wrap wrap) {
-  return sc::Texture{std::move(name), {}, filter, wrap, std::move(image)};
-}
+using test_support::texture;
 
 // ---- scenes -----------------------------------------------------------------------
 
 inline sc::Scene make_scene(int width, int height, glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up, double fovy_deg,
                             double near, double far) {
-  sc::Scene s;
-  s.name = "extremes";
-  s.file = "in-memory.json";
-  s.width = width;
-  s.height = height;
-  s.camera = sc::Camera{eye, target, up, fovy_deg, near, far};
-  return s;
+  return test_support::empty_scene("extremes", width, height, eye, target, up, fovy_deg, near, far);
 }
 
 // A quad a, b, c, d as triangles (a, b, c) and (a, c, d).
@@ -128,24 +117,10 @@ inline std::vector<sc::Object> room(glm::dvec3 lo, glm::dvec3 hi) {
   return out;
 }
 
-inline sc::Projector projector(glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up, double fovy_deg, double near, double far,
-                               int image, glm::dvec3 color = glm::dvec3(1.0)) {
-  sc::Projector p;
-  p.name = "projector";
-  p.eye = eye;
-  p.target = target;
-  p.up = up;
-  p.fovy_deg = fovy_deg;
-  p.aspect = 1.0;
-  p.near = near;
-  p.far = far;
-  p.image = image;
-  p.color = color;
-  return p;
-}
+using test_support::projector;
 
 // Rounds every object-space position to the Q15.16 grid the fixed pipeline
-// stores (prepared_scene.hpp: positions are Q15.16), so both renderers draw
+// stores (spanlight/scene.hpp: positions are Q15.16), so both renderers draw
 // the same geometry and a comparison measures the pipeline's arithmetic, not
 // the input format. (What the format itself costs is bounded in docs/limits.md.)
 inline void snap_positions_to_q16(sc::Scene& s) {

@@ -264,8 +264,8 @@ TEST_CASE("texel coordinates beyond 2^21 are refused by prepare, not wrapped", "
   // Regression (found by this suite, fixed; docs/limits.md): prepare.cpp's uv_frac_bits_for keeps |uv * size| * 2^frac
   // below 2^30 only down to frac = 0; a larger texel coordinate (allowed by
   // the loader: any finite uv) is still rounded with llround and cast to
-  // int32, which wraps above 2^31, and geometry.hpp's `ordered[1]->u - u0`
-  // (int32) and mix3's deltas assume |u| < 2^29 (perspective.hpp). Positions
+  // int32, which wraps above 2^31, and 2_triangle/attributes.hpp's `v[1]->u - a.u0`
+  // (int32) and mix3's deltas assume |u| < 2^29 (3_span/exact.hpp). Positions
   // have the analogous check (PrepareError beyond 16384 units); uvs have none.
   // The fix: in prepare_scene, throw PrepareError when the largest
   // |uv * size| of an object is not below 2^29 (before uv_frac_bits_for).

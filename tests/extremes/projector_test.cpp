@@ -4,7 +4,7 @@
 //
 // Expectation: no unexplained pixel (extremes_support.hpp). The projector's
 // s/q, t/q, r/q are exact at span subdivision points and stepped linearly in
-// between with a drift below 2^-3 texel of the projector image (span.hpp), and
+// between with a drift below 2^-3 texel of the projector image (3_span/segments.hpp), and
 // evaluated at every pixel of a segment where q changes sign; so a light
 // boundary (frustum side, q = 0, near or far plane, texel edge) moves by less
 // than a pixel wherever a projector texel covers at most ~8 pixels, which holds

@@ -65,7 +65,7 @@ TEST_CASE("scenes/extremes/guard_band_overflow.json: w near the transform's boun
 }
 
 TEST_CASE("scenes/extremes/uv_beyond_2_29.json: texel coordinates beyond 2^29 are refused", "[extremes][files]") {
-  // The uv range check in prepare (huge_test.cpp); drawn, it would overflow int32 in geometry.hpp.
+  // The uv range check in prepare (huge_test.cpp); drawn, it would overflow int32 in 2_triangle/attributes.hpp.
   CHECK_THROWS_AS(pr::prepare_scene(load("uv_beyond_2_29")), pr::PrepareError);
 }
 

@@ -21,12 +21,14 @@
 #include <vector>
 
 #include "../pipeline/eye_pass.hpp"
+#include "../support/convex_polygon.hpp"
 #include "extremes_support.hpp"
 #include "float_model/clip.hpp"
 #include "float_model/transform.hpp"
 
 using namespace spanlight::xt;
 using spanlight::ScreenVertex;
+using spanlight::test_support::inside_distance;
 
 namespace {
 
@@ -121,24 +123,6 @@ std::vector<ExactTriangle> exact_triangles(const sc::Scene& s, const pr::Prepare
     }
   }
   return out;
-}
-
-// Signed distance (px) from p to a convex polygon's outline: > 0 inside.
-double inside_distance(const std::vector<glm::dvec2>& polygon, glm::dvec2 p) {
-  double area2 = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const glm::dvec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-    area2 += a.x * b.y - b.x * a.y;
-  }
-  const double orientation = area2 > 0 ? 1.0 : -1.0;
-  double smallest = 1e300;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const glm::dvec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()], d = b - a;
-    const double len = std::hypot(d.x, d.y);
-    if (len == 0.0) continue;
-    smallest = std::min(smallest, orientation * (d.x * (p.y - a.y) - d.y * (p.x - a.x)) / len);
-  }
-  return smallest;
 }
 
 struct OutlineCheck {

@@ -20,11 +20,13 @@
 
 #include "float_model/float_model.hpp"
 #include "pipeline_support.hpp"
+#include "../support/convex_polygon.hpp"
 
 namespace fm = spanlight::float_model;
 namespace pt = spanlight::ptest;
 using spanlight::Cull;
 using spanlight::ScreenVertex;
+using spanlight::test_support::inside_distance;
 
 namespace {
 
@@ -33,30 +35,6 @@ namespace {
 glm::dvec2 exact_window(const spanlight::scene::Scene& s, glm::dvec3 p) {
   const glm::dvec4 c = spanlight::scene::camera_view_projection(s) * glm::dvec4(p, 1.0);
   return {(c.x / c.w * 0.5 + 0.5) * s.width, (0.5 - c.y / c.w * 0.5) * s.height};
-}
-
-// Signed distance (pixels) of point p from the line a->b, positive on the
-// side where the convex polygon listed in this orientation lies.
-double side_distance(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p, double orientation) {
-  const glm::dvec2 d = b - a;
-  return orientation * (d.x * (p.y - a.y) - d.y * (p.x - a.x)) / std::hypot(d.x, d.y);
-}
-
-// The smallest signed distance of p to the edges of a convex polygon:
-// > 0 inside, < 0 outside.
-double inside_distance(const std::vector<glm::dvec2>& polygon, glm::dvec2 p) {
-  double area2 = 0.0;
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const glm::dvec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-    area2 += a.x * b.y - b.x * a.y;
-  }
-  // y down: a polygon clockwise on screen has a positive shoelace sum here;
-  // the edge function d x (p - a) is positive inside for that orientation.
-  const double orientation = area2 > 0 ? 1.0 : -1.0;
-  double smallest = 1e300;
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    smallest = std::min(smallest, side_distance(polygon[i], polygon[(i + 1) % polygon.size()], p, orientation));
-  return smallest;
 }
 
 fm::SnappedVertex snapped(const ScreenVertex& v) { return {v.x, v.y}; }

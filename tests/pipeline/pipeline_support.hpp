@@ -20,6 +20,7 @@
 #include "scene/scene.hpp"
 #include "eye_pass.hpp"
 #include "spanlight/render.hpp"
+#include "../support/scene_builders.hpp"
 
 // The sanitizer twin runs the same properties on fewer random cases.
 #if defined(__SANITIZE_ADDRESS__)
@@ -45,25 +46,12 @@ inline const std::array<const char*, 4>& shared_scene_names() {
 
 // ---- scenes built in memory --------------------------------------------------
 
-inline scene::Image solid_image(int width, int height, std::array<std::uint8_t, 3> rgb) {
-  scene::Image image{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width * height) * 3)};
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = rgb[i % 3];
-  return image;
-}
-
-inline scene::Texture texture(std::string name, scene::Image image, scene::Filter filter, scene::Wrap wrap) {
-  return scene::Texture{std::move(name), {}, filter, wrap, std::move(image)};
-}
+using test_support::solid_image;
+using test_support::texture;
 
 inline scene::Scene empty_scene(int width, int height, glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up,
                                 double fovy_deg, double near, double far) {
-  scene::Scene s;
-  s.name = "ptest";
-  s.file = "in-memory.json";
-  s.width = width;
-  s.height = height;
-  s.camera = scene::Camera{eye, target, up, fovy_deg, near, far};
-  return s;
+  return test_support::empty_scene("ptest", width, height, eye, target, up, fovy_deg, near, far);
 }
 
 // A quad a, b, c, d as triangles (a, b, c) and (a, c, d); uv 0.
@@ -77,21 +65,7 @@ inline scene::Object quad(std::string name, std::array<glm::dvec3, 4> corners, g
   return object;
 }
 
-inline scene::Projector projector(glm::dvec3 eye, glm::dvec3 target, glm::dvec3 up, double fovy_deg, double near,
-                                  double far, int image, glm::dvec3 color) {
-  scene::Projector p;
-  p.name = "projector";
-  p.eye = eye;
-  p.target = target;
-  p.up = up;
-  p.fovy_deg = fovy_deg;
-  p.aspect = 1.0;
-  p.near = near;
-  p.far = far;
-  p.image = image;
-  p.color = color;
-  return p;
-}
+using test_support::projector;
 
 // A floor (y = 0, |x| <= 6, -8 <= z <= 6, white) that the plane q = 0 cuts
 // through: the projector's eye lies on the floor at (0, 0, 0.5) and looks 9.7

@@ -61,6 +61,22 @@ struct FloorPixel {
   double edge_distance = 0.0;  // max(|x|, |z|) - 2/3: < 0 in shadow; |.| bounds the distance to the outline
 };
 
+// Floor pixels farther than `margin` from the shadow's outline, on either side,
+// and how many of them do not show that side's value.
+struct ClearSides {
+  int in_shadow = 0, in_light = 0, wrong_dark = 0, wrong_lit = 0;
+
+  void add(double edge_distance, std::uint8_t value) {
+    if (edge_distance < -margin) {
+      ++in_shadow;
+      wrong_dark += value != dark;
+    } else if (edge_distance > margin) {
+      ++in_light;
+      wrong_lit += value != lit;
+    }
+  }
+};
+
 FloorPixel classify(const sc::Scene& s, int x, int y) {
   FloorPixel out{true, 0.0};
   for (int dy = -1; dy <= 1 && out.usable; ++dy) {
@@ -83,7 +99,8 @@ TEST_CASE("nearest shadow compare: the floor under the occluder is dark, the res
   for (const bool fused : {false, true}) {
     const spanlight::Knobs knobs = pt::knobs_with(fused ? spanlight::Passes::fused : spanlight::Passes::multipass);
     const auto frame = spanlight::prepare::render_fixed(*prepared, knobs);
-    int in_shadow = 0, in_light = 0, wrong_dark = 0, wrong_lit = 0, other = 0, worst_x = -1, worst_y = -1;
+    ClearSides clear;
+    int other = 0, worst_x = -1, worst_y = -1;
     double worst = 0.0;
     for (int y = 1; y + 1 < s.height; ++y) {
       for (int x = 1; x + 1 < s.width; ++x) {
@@ -97,24 +114,18 @@ TEST_CASE("nearest shadow compare: the floor under the occluder is dark, the res
           worst_x = x;
           worst_y = y;
         }
-        if (p.edge_distance < -margin) {
-          ++in_shadow;
-          wrong_dark += value != dark;
-        } else if (p.edge_distance > margin) {
-          ++in_light;
-          wrong_lit += value != lit;
-        }
+        clear.add(p.edge_distance, value);
       }
     }
-    INFO((fused ? "fused" : "multipass") << ": " << in_shadow << " pixels clearly in shadow, " << in_light
+    INFO((fused ? "fused" : "multipass") << ": " << clear.in_shadow << " pixels clearly in shadow, " << clear.in_light
                                          << " clearly lit; margin " << margin << " units (2 map texels); farthest "
                                          << "misclassified pixel " << worst_x << ", " << worst_y << " at "
                                          << worst / texel_on_floor << " texels from the outline");
-    CHECK(in_shadow > 300);
-    CHECK(in_light > 3000);
+    CHECK(clear.in_shadow > 300);
+    CHECK(clear.in_light > 3000);
     CHECK(other == 0);
-    CHECK(wrong_dark == 0);
-    CHECK(wrong_lit == 0);
+    CHECK(clear.wrong_dark == 0);
+    CHECK(clear.wrong_lit == 0);
   }
 }
 
@@ -122,7 +133,8 @@ TEST_CASE("pcf2x2 gives intermediate light only near the shadow's outline", "[sh
   const auto s = shadow_scene(sc::ShadowFilter::pcf2x2);
   const auto prepared = spanlight::prepare::prepare_scene(s);
   const auto frame = spanlight::prepare::render_fixed(*prepared, spanlight::Knobs{});
-  int in_shadow = 0, in_light = 0, wrong_dark = 0, wrong_lit = 0, mixed = 0, mixed_far = 0;
+  ClearSides clear;
+  int mixed = 0, mixed_far = 0;
   for (int y = 1; y + 1 < s.height; ++y) {
     for (int x = 1; x + 1 < s.width; ++x) {
       const FloorPixel p = classify(s, x, y);
@@ -131,18 +143,12 @@ TEST_CASE("pcf2x2 gives intermediate light only near the shadow's outline", "[sh
       const bool is_mixed = value > dark && value < lit;
       mixed += is_mixed;
       if (std::fabs(p.edge_distance) > margin) mixed_far += is_mixed;
-      if (p.edge_distance < -margin) {
-        ++in_shadow;
-        wrong_dark += value != dark;
-      } else if (p.edge_distance > margin) {
-        ++in_light;
-        wrong_lit += value != lit;
-      }
+      clear.add(p.edge_distance, value);
     }
   }
-  INFO(in_shadow << " pixels clearly in shadow, " << in_light << " clearly lit, " << mixed << " in between");
+  INFO(clear.in_shadow << " pixels clearly in shadow, " << clear.in_light << " clearly lit, " << mixed << " in between");
   CHECK(mixed > 0);  // pcf does blend at the outline
   CHECK(mixed_far == 0);
-  CHECK(wrong_dark == 0);
-  CHECK(wrong_lit == 0);
+  CHECK(clear.wrong_dark == 0);
+  CHECK(clear.wrong_lit == 0);
 }

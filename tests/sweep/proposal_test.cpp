@@ -16,7 +16,7 @@ using namespace spanlight;
 namespace {
 
 sweep::SweepRow row(int span, int depth_bits, double psnr, double max_lsb, std::uint64_t m7,
-                    sweep::FilterChoice filter = sweep::FilterChoice::scene) {
+                    spanlight::FilterChoice filter = spanlight::FilterChoice::scene) {
   sweep::SweepRow r;
   REQUIRE(set_knob(r.point.knobs, "span", std::to_string(span)) == KnobError::ok);
   REQUIRE(set_knob(r.point.knobs, "depth-bits", std::to_string(depth_bits)) == KnobError::ok);
@@ -39,7 +39,7 @@ sweep::SweepResult sample() {
   r.format = "rgb888";
   r.covered_pixels = 1000;
   r.rows = {row(1, 24, 50, 4, 90), row(4, 24, 46, 9, 60), row(64, 24, 42, 30, 50), row(32, 24, 38, 60, 45),
-            row(32, 16, 38, 60, 44), row(16, 16, 42, 30, 49), row(32, 24, 48, 5, 20, sweep::FilterChoice::nearest)};
+            row(32, 16, 38, 60, 44), row(16, 16, 42, 30, 49), row(32, 24, 48, 5, 20, spanlight::FilterChoice::nearest)};
   return r;
 }
 
@@ -86,7 +86,7 @@ TEST_CASE("a knob config survives writing and reading - bad ones are refused wit
   std::filesystem::create_directories(dir);
   sweep::GridPoint config{Knobs{.span_log2 = 3, .tolerance_log2 = 2, .table_bits = 10, .newton = 0, .depth_bits = 16,
                                 .format = PixelFormat::rgb565_be, .passes = Passes::multipass},
-                          sweep::FilterChoice::nearest};
+                          spanlight::FilterChoice::nearest};
   {
     std::ofstream(dir / "good.json") << analyze::to_json(config, R"({"psnr_db": 40})");
   }

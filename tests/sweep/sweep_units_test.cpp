@@ -295,7 +295,7 @@ TEST_CASE("coordinate errors: the larger axis, interior pixels only, mismatches 
 }
 
 TEST_CASE("the forced filters are those that change a texture: a trilinear scene gets a bilinear variant", "[sweep]") {
-  using spanlight::sweep::FilterChoice;
+  using spanlight::FilterChoice;
   auto choices = [](std::initializer_list<spanlight::scene::Filter> filters) {
     spanlight::scene::Scene s;
     for (const auto f : filters) {

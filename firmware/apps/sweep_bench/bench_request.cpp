@@ -14,13 +14,12 @@ bool parse_request(spanlight::hal::Args args, Request& out, const char*& error) 
       out.per_pass = true;
     } else if (word == "--filter") {
       if (i + 1 >= args.size()) return false;
-      const std::string_view value = args[++i];
-      error = args[i];
-      if (value == "scene") out.force_filter = false;
-      else if (value == "nearest" || value == "bilinear") {
-        out.force_filter = true;
-        out.filter = value == "nearest" ? spanlight::Filter::nearest : spanlight::Filter::bilinear;
-      } else return false;
+      error = args[++i];
+      spanlight::FilterChoice choice = spanlight::FilterChoice::scene;
+      if (!spanlight::parse_filter_choice(args[i], choice)) return false;
+      out.force_filter = choice != spanlight::FilterChoice::scene;
+      if (out.force_filter)
+        out.filter = choice == spanlight::FilterChoice::nearest ? spanlight::Filter::nearest : spanlight::Filter::bilinear;
     } else {
       knob_words[knob_count++] = args[i];
     }

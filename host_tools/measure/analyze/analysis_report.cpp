@@ -8,15 +8,12 @@
 
 #include "sweep/report_tables.hpp"
 #include "bake/knob_text.hpp"
+#include "io/number_text.hpp"
 
 namespace spanlight::analyze {
 namespace {
 
-std::string num(double v) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
+std::string num(double v) { return io::number_text("%.6g", v); }
 
 std::string interval(const Interval& i) { return i.empty ? std::string("none") : std::string("[") + num(i.lo) + ", " + num(i.hi) + "]"; }
 
@@ -132,7 +129,7 @@ std::string proposal_text(const sweep::SweepResult& r, const Proposal& p, const 
                 sweep::label(row.point).c_str(), std::isinf(row.psnr_db) ? "inf" : num(row.psnr_db).c_str(), row.max_lsb,
                 row.mean_lsb, row.pct_over_2, row.pct_over_8, row.texcoord_err_max());
   out << line;
-  if (row.point.filter != sweep::FilterChoice::scene) {
+  if (row.point.filter != FilterChoice::scene) {
     std::snprintf(line, sizeof line, "  against the scene as authored (filters as written): PSNR %s dB, max %.0f LSB\n",
                   std::isinf(row.psnr_vs_scene_db) ? "inf" : num(row.psnr_vs_scene_db).c_str(), row.max_vs_scene_lsb);
     out << line;

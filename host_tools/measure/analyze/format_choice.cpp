@@ -5,16 +5,13 @@
 #include <cstdio>
 
 #include "bake/knob_text.hpp"
+#include "io/number_text.hpp"
 #include "prepare/prepare.hpp"
 
 namespace spanlight::analyze {
 namespace {
 
-std::string num(double v) {
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.6g", v);
-  return buffer;
-}
+std::string num(double v) { return io::number_text("%.6g", v); }
 
 void choose_first(FormatChoice& c) {
   for (std::size_t i = 0; i < c.candidates.size(); ++i)

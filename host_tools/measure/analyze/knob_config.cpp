@@ -46,14 +46,10 @@ sweep::GridPoint read_knob_config(const std::filesystem::path& path) {
     else throw std::runtime_error(expected);
     if (set_knob(point.knobs, info.name, value) != KnobError::ok) throw std::runtime_error(expected + ", not \"" + value + "\"");
   }
+  const std::string filter_expected = file + ": texture_filter: expected one of " + sweep::filter_choice_list();
   const auto filter = j.find("texture_filter");
-  if (filter == j.end() || !filter->is_string())
-    throw std::runtime_error(file + ": texture_filter: expected one of scene, nearest, bilinear");
-  try {
-    point.filter = sweep::filter_from_string(filter->get<std::string>());
-  } catch (const std::invalid_argument&) {
-    throw std::runtime_error(file + ": texture_filter: expected one of scene, nearest, bilinear");
-  }
+  if (filter == j.end() || !filter->is_string()) throw std::runtime_error(filter_expected);
+  if (!parse_filter_choice(filter->get<std::string>(), point.filter)) throw std::runtime_error(filter_expected);
   return point;
 }
 

@@ -31,7 +31,7 @@ Proposal cheapest_meeting(const sweep::SweepResult& r, const AccuracyTarget& tar
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const sweep::SweepRow& row = r.rows[i];
     if (row.point.knobs.depth_bits < c.min_depth_bits) continue;
-    if (!c.allow_filter_change && row.point.filter != sweep::FilterChoice::scene) continue;
+    if (!c.allow_filter_change && row.point.filter != FilterChoice::scene) continue;
     if (!meets(row, target, default_rms)) continue;
     const std::optional<double> cost = sweep::cost_of(row, p.axis);
     if (!cost) continue;

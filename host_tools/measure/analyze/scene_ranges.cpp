@@ -5,9 +5,8 @@
 #include <limits>
 
 #include "float_model/clip.hpp"
-#include "float_model/raster.hpp"
+#include "float_model/scene_geometry.hpp"
 #include "float_model/setup.hpp"
-#include "float_model/transform.hpp"
 
 namespace spanlight::analyze {
 
@@ -69,20 +68,17 @@ ProjectorRanges projector_ranges(const scene::Scene& s, const scene::Projector& 
 
 // The eye's geometry after near/far clipping: w and window extents.
 void clip_space_ranges(const scene::Scene& s, SceneRanges& r) {
-  for (const scene::Object& o : s.objects) {
-    const float_model::ObjectTransform transform = float_model::eye_transform(s, o);
-    for (std::size_t i = 0; i < o.mesh.triangles.size(); ++i) {
-      for (const float_model::ClipTriangle& piece : float_model::clip_triangle(float_model::transform_triangle(transform, o.mesh, i))) {
-        for (const float_model::ClipVertex& v : piece) {
-          r.clip_w.add(v.position.w);
-          if (v.position.w <= 0.0) continue;
-          const float_model::WindowPoint w = float_model::to_window(v.position, s.width, s.height);
-          r.window_x.add(w.x);
-          r.window_y.add(w.y);
-        }
+  float_model::for_each_triangle(s, float_model::eye_transforms(s), [&](float_model::MeshTriangle, const float_model::ClipTriangle& triangle) {
+    for (const float_model::ClipTriangle& piece : float_model::clip_triangle(triangle)) {
+      for (const float_model::ClipVertex& v : piece) {
+        r.clip_w.add(v.position.w);
+        if (v.position.w <= 0.0) continue;
+        const float_model::WindowPoint w = float_model::to_window(v.position, s.width, s.height);
+        r.window_x.add(w.x);
+        r.window_y.add(w.y);
       }
     }
-  }
+  });
 }
 
 // The nearest fragment per pixel and the nearest one of any other object.
@@ -91,29 +87,24 @@ void depth_ranges(const scene::Scene& s, SceneRanges& r) {
   constexpr double none = std::numeric_limits<double>::infinity();
   std::vector<double> first(pixels, none), second(pixels, none);
   std::vector<int> first_object(pixels, -1), second_object(pixels, -1);
-  const float_model::Viewport viewport{s.width, s.height};
-  for (std::size_t o = 0; o < s.objects.size(); ++o) {
-    const scene::Object& object = s.objects[o];
-    const int id = static_cast<int>(o);
-    const auto keep_two = [&](const float_model::ClipTriangle&, const float_model::Fragment& f) {
-      const std::size_t p = static_cast<std::size_t>(f.y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(f.x);
-      const double d = f.depth;
-      if (first_object[p] == id) {
-        first[p] = std::min(first[p], d);
-      } else if (d < first[p]) {
-        second[p] = first[p];
-        second_object[p] = first_object[p];
-        first[p] = d;
-        first_object[p] = id;
-      } else if (second_object[p] == id || d < second[p]) {
-        second[p] = std::min(second_object[p] == id ? second[p] : none, d);
-        second_object[p] = id;
-      }
-    };
-    const float_model::ObjectTransform transform = float_model::eye_transform(s, object);
-    for (std::size_t i = 0; i < object.mesh.triangles.size(); ++i)
-      float_model::draw_triangle(float_model::transform_triangle(transform, object.mesh, i), viewport, object.cull, keep_two);
-  }
+  const auto keep_two = [&](float_model::MeshTriangle which, const float_model::ClipTriangle&,
+                            const float_model::Fragment& f) {
+    const int id = static_cast<int>(which.object);
+    const std::size_t p = static_cast<std::size_t>(f.y) * static_cast<std::size_t>(s.width) + static_cast<std::size_t>(f.x);
+    const double d = f.depth;
+    if (first_object[p] == id) {
+      first[p] = std::min(first[p], d);
+    } else if (d < first[p]) {
+      second[p] = first[p];
+      second_object[p] = first_object[p];
+      first[p] = d;
+      first_object[p] = id;
+    } else if (second_object[p] == id || d < second[p]) {
+      second[p] = std::min(second_object[p] == id ? second[p] : none, d);
+      second_object[p] = id;
+    }
+  };
+  float_model::for_each_fragment(s, float_model::Viewport{s.width, s.height}, float_model::eye_transforms(s), keep_two);
   for (std::size_t p = 0; p < pixels; ++p) {
     if (first_object[p] < 0) continue;
     ++r.depth.covered;

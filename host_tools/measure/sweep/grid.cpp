@@ -24,12 +24,19 @@ std::string choice_list(std::string_view knob) {
   return list;
 }
 
-const char* to_string(FilterChoice filter) { return filter_values[static_cast<int>(filter)]; }
+std::string filter_choice_list() {
+  std::string list;
+  for (const char* v : knob_values::filter) list += (list.empty() ? "" : ", ") + std::string(v);
+  return list;
+}
+
+const char* to_string(FilterChoice filter) { return filter_choice_name(filter); }
 
 FilterChoice filter_from_string(const std::string& text) {
-  for (int i = 0; i < 3; ++i)
-    if (text == filter_values[i]) return static_cast<FilterChoice>(i);
-  throw std::invalid_argument("texture filter: expected scene, nearest or bilinear, not \"" + text + "\"");
+  FilterChoice filter = FilterChoice::scene;
+  if (!parse_filter_choice(text, filter))
+    throw std::invalid_argument("texture filter: expected one of " + filter_choice_list() + ", not \"" + text + "\"");
+  return filter;
 }
 
 std::string label(const GridPoint& p) {

@@ -12,17 +12,15 @@
 
 namespace spanlight::sweep {
 
-enum class FilterChoice { scene, nearest, bilinear };
-
 struct GridPoint {
   Knobs knobs{};
   FilterChoice filter = FilterChoice::scene;
   friend bool operator==(const GridPoint&, const GridPoint&) = default;
 };
 
+// FilterChoice and its names are knobs.hpp's (the bench parses them too).
 const char* to_string(FilterChoice filter);
 FilterChoice filter_from_string(const std::string& text);  // throws std::invalid_argument
-inline constexpr const char* filter_values[] = {"scene", "nearest", "bilinear"};
 
 // "span=16 tolerance=5 table-bits=8 newton=1 depth-bits=24 passes=fused filter=scene":
 // unique within a grid (whose format is one), no commas.
@@ -30,6 +28,9 @@ std::string label(const GridPoint& point);
 
 // "1, 2, 4, ...": a knob's allowed values for messages.
 std::string choice_list(std::string_view knob);
+
+// "scene, nearest, bilinear": the filter choices for messages.
+std::string filter_choice_list();
 
 // Each knob's values (knob_table's order and names) and the filters.
 struct GridSpec {

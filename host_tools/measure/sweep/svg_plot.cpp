@@ -2,26 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
+
+#include "io/number_text.hpp"
 
 namespace spanlight::sweep {
 namespace {
 
 constexpr int margin_left = 80, margin_right = 30, margin_top = 40, margin_bottom = 60;
 
-std::string number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.1f", v);
-  return buffer;
-}
+std::string number(double v) { return io::number_text("%.1f", v); }
 
 // A tick label without trailing zeros: 0.5, 2, 40.
-std::string tick_label(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
-}
+std::string tick_label(double v) { return io::number_text("%g", v); }
 
 struct Range {
   double lo, hi;

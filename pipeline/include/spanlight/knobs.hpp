@@ -130,4 +130,25 @@ constexpr KnobParse parse_knobs(Knobs& knobs, int argc, const char* const* argv)
   return {KnobError::ok, argc};
 }
 
+// Not a knob but swept like one: the texture filter a sweep may force on every
+// texture (the bench's `--filter`, a knob configuration's texture_filter);
+// `scene` keeps each texture's own.
+enum class FilterChoice : std::uint8_t { scene, nearest, bilinear };
+
+namespace knob_values {
+inline constexpr const char* filter[] = {"scene", "nearest", "bilinear"};
+}  // namespace knob_values
+
+constexpr const char* filter_choice_name(FilterChoice filter) {
+  return knob_values::filter[static_cast<int>(filter) % 3];
+}
+
+// The choice a word names; false, leaving `out` as it was, for any other word.
+constexpr bool parse_filter_choice(std::string_view word, FilterChoice& out) {
+  const int i = detail::index_of(word, knob_values::filter, 3);
+  if (i < 0) return false;
+  out = static_cast<FilterChoice>(i);
+  return true;
+}
+
 }  // namespace spanlight

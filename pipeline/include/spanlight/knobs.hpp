@@ -140,12 +140,13 @@ inline constexpr const char* filter[] = {"scene", "nearest", "bilinear"};
 }  // namespace knob_values
 
 constexpr const char* filter_choice_name(FilterChoice filter) {
-  return knob_values::filter[static_cast<int>(filter) % 3];
+  const auto i = static_cast<std::size_t>(filter);
+  return knob_values::filter[i < std::size(knob_values::filter) ? i : 0];
 }
 
 // The choice a word names; false, leaving `out` as it was, for any other word.
 constexpr bool parse_filter_choice(std::string_view word, FilterChoice& out) {
-  const int i = detail::index_of(word, knob_values::filter, 3);
+  const int i = detail::index_of(word, knob_values::filter, static_cast<int>(std::size(knob_values::filter)));
   if (i < 0) return false;
   out = static_cast<FilterChoice>(i);
   return true;

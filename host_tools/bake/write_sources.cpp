@@ -3,7 +3,7 @@
 #include <sstream>
 
 #include "bake/bake.hpp"
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 #include "spanlight/scene_features.hpp"
 
 namespace spanlight::bake {

@@ -15,7 +15,7 @@
 #include "io/atomic_write.hpp"
 #include "prepare/prepare.hpp"
 #include "sweep/csv_io.hpp"
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 #include "sweep/measurement.hpp"
 #include "sweep/sweep_run.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 #include "cli/accuracy_warning.hpp"
 #include "cli/commands.hpp"
 #include "cli/knobs.hpp"

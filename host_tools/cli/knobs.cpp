@@ -1,6 +1,6 @@
 #include "cli/knobs.hpp"
 
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 
 #include <string>
 #include <vector>

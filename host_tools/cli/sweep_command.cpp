@@ -8,7 +8,7 @@
 #include "cli/load.hpp"
 #include "io/output_folder.hpp"
 #include "prepare/prepare.hpp"
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 #include "sweep/measurement.hpp"
 #include "sweep/report_files.hpp"
 #include "sweep/report_plots.hpp"

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "sweep/report_tables.hpp"
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 #include "io/number_text.hpp"
 
 namespace spanlight::analyze {

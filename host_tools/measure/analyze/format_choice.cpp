@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 #include "io/number_text.hpp"
 #include "prepare/prepare.hpp"
 

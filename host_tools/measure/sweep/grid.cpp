@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 
 namespace spanlight::sweep {
 namespace {

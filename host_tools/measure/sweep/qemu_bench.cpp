@@ -2,7 +2,7 @@
 
 #include <sstream>
 
-#include "bake/knob_text.hpp"
+#include "io/knob_text.hpp"
 
 namespace spanlight::sweep {
 namespace fs = std::filesystem;

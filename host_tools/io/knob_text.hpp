@@ -1,6 +1,7 @@
 // The knobs as text, every form made from the one knob_table (spanlight/knobs.hpp):
 // command-line words for the bench and the CLI, one line for reports and baked
 // configurations, and each knob's allowed values for option checks and grids.
+// Header only, beside io/number_text.hpp: the text forms every host tool shares.
 #pragma once
 
 #include <string>

@@ -26,6 +26,8 @@ namespace {
 using namespace spanlight;
 using Color = ColorTraits<baked::features.format>;
 
+// The demo's own buffers rather than baked_frame's whole-frame ones: band-sized, and the 64 KiB
+// working set docs/live-scenes.md states is counted from exactly these declarations.
 constexpr std::uint16_t band_rows = 16;
 constexpr std::uint32_t band_pixels = std::uint32_t{baked::width} * band_rows;
 static_assert(baked::projector_count == 1 && baked::shadow_map_texels == 128 * 128, "the demo's RAM budget is for one 128^2 map");

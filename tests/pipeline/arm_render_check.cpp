@@ -9,25 +9,14 @@ using namespace spanlight;
 
 namespace {
 
-constexpr Features texture_only() {
-  Features f;
-  f.max_projectors = 0;
-  f.shadows = f.pcf = f.trilinear = f.falloff = f.facing = f.clamped = f.tinted = false;
-  f.format = PixelFormat::rgb565;
-  f.multipass = false;
-  f.table_bits = 8;
-  f.newton = 1;
-  f.depth_bits = 16;
-  return f;
-}
+// A textured room's build: no projector, repeat textures, fused only, reciprocal and depth fixed.
+constexpr Features texture_only{.max_projectors = 0, .shadows = false, .pcf = false, .clamped = false,
+                                .tinted = false, .trilinear = false, .falloff = false, .facing = false,
+                                .format = PixelFormat::rgb565, .multipass = false, .table_bits = 8, .newton = 1,
+                                .depth_bits = 16};
 
-constexpr Features everything() {
-  Features f = host_features(PixelFormat::rgb565);
-  f.table_bits = 8;
-  f.newton = 1;
-  f.depth_bits = 16;
-  return f;
-}
+// Every feature the pipeline has, both pass plans, with the same fixed reciprocal and depth.
+constexpr Features everything{.format = PixelFormat::rgb565, .table_bits = 8, .newton = 1, .depth_bits = 16};
 
 }  // namespace
 
@@ -35,12 +24,12 @@ extern "C" {
 
 RenderStatus arm_render_texture_only(const PreparedScene* scene, const FrameMatrices* matrices,
                                      const FrameTarget<PixelFormat::rgb565, std::uint16_t>* target, const Knobs* knobs) {
-  return render_frame<texture_only()>(*scene, *matrices, *target, *knobs);
+  return render_frame<texture_only>(*scene, *matrices, *target, *knobs);
 }
 
 RenderStatus arm_render_everything(const PreparedScene* scene, const FrameMatrices* matrices,
                                    const FrameTarget<PixelFormat::rgb565, std::uint16_t>* target, const Knobs* knobs) {
-  return render_frame<everything()>(*scene, *matrices, *target, *knobs);
+  return render_frame<everything>(*scene, *matrices, *target, *knobs);
 }
 
 }  // extern "C"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the committed sweep results, docs/sweep/<scene>/, for every shared scene and the
-# two anchor scenes, with the default grid (its values from the knob table: spans 1, 4, 16, 64,
+# Regenerates the committed sweep results, docs/sweep/<scene>/, for every shared scene, the
+# two anchor scenes and mesh_bear, with the default grid (its values from the knob table: spans 1, 4, 16, 64,
 # every table size, Newton 0 and 1, both depth settings), counted on Cortex-M7 and Cortex-M0+
 # in QEMU through tools/qemu_icount/measure_elf.sh.
 #   docs/sweep/regenerate.sh [BUILD_DIR [OUT_DIR [SWEEP_OPTION...]]]
@@ -29,8 +29,9 @@ mkdir -p "$out"
 for scene in spot_shadow three_projectors horizon; do
   "$build/bin/spanlight" sweep "scenes/$scene.json" --out "$out/$scene" --pictures 3 --firmware-dir "$build" "$@"
 done
-# The anchor scenes of shared/anchors.md (RGB565), for the comparison with tgx.
-for scene in textured_room textured_room_nearest; do
+# The anchor scenes of shared/anchors.md (RGB565), for the comparison with tgx, and the model
+# of 2,400 small triangles (docs/meshes.md), baked the same way.
+for scene in textured_room textured_room_nearest mesh_bear; do
   "$build/bin/spanlight" sweep "scenes/$scene.json" --out "$out/$scene" --format rgb565 --pictures 2 \
     --firmware-dir "$build" "$@"
 done

@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # The cost of a triangle apart from the cost of a pixel. `spanlight cost` measures SCENE at
-# three frame sizes (W x H, W/2 x H/2, W/4 x H/4) with the same camera, so the same triangles
-# reach setup while the pixels scale with the frame. A least-squares line over the three
-#     instructions = per_frame + per_pixel * frame_pixels
-# splits the frame: per_frame / triangles is what a triangle costs (its share of the vertex
-# transforms and projections, clipping, setup, the per-object work), per_pixel what a pixel of
-# the frame costs at the scene's coverage (clears, rows, spans, the pixel work).
+# three frame sizes (scale s = 1, 1/2, 1/4 of W x H) with the same camera, so the same
+# triangles reach setup while their rows scale with s and their pixels with s^2. The parabola
+# through the three counts,
+#     instructions(s) = per_frame + per_rows * s + per_pixels * s^2,
+# splits the frame: per_frame (its value at s = 0) / triangles is what a triangle costs apart
+# from its rows and pixels (its share of the vertex transforms and projections, clipping,
+# setup, the per-object work); per_rows is the part that grows with the rows (row edges, span
+# ends, segments), per_pixels the part that grows with the area (clears, the pixel work).
 #   scripts/triangle-cost.sh [BUILD_DIR] SCENE.json [KNOB...]
 #     BUILD_DIR  default build (needs bin/spanlight; spanlight cost cross-builds in a scratch folder)
 #     KNOB...    passed to spanlight cost, e.g. --format rgb565 --depth-bits 16
@@ -25,7 +27,7 @@ width=$(sed -nE 's/.*"width": *([0-9]+).*/\1/p' <<<"$size")
 height=$(sed -nE 's/.*"height": *([0-9]+).*/\1/p' <<<"$size")
 [ -n "$width" ] && [ -n "$height" ] ||
   { echo "triangle-cost: $scene: output: expected width and height on the \"output\" line" >&2; exit 2; }
-triangles=$("$spanlight" analyze "$scene" | sed -nE 's/.* ([0-9]+) triangle\(s\).*/\1/p' | head -n 1)
+triangles=$("$spanlight" analyze "$scene" 2>/dev/null | sed -nE 's/.* ([0-9]+) triangle\(s\).*/\1/p' | head -n 1)
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -43,17 +45,19 @@ done
 
 echo "$(basename "$scene") at ${width}x${height}, /2 and /4; $triangles triangles; knobs: ${*:-defaults}"
 echo
-echo "| core | instructions at ${width}x${height} | per frame (fit) | per triangle | per frame pixel (fit) | largest residual |"
-echo "|---|---:|---:|---:|---:|---:|"
+echo "| core | at s = 1 | s = 1/2 | s = 1/4 | per frame (s = 0) | per triangle | rows part at s = 1 | pixels part at s = 1 |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|"
 for cpu in cortex-m7 cortex-m0plus; do
+  # Lagrange: the parabola's coefficients from its values y1, y2, y3 at s = 1, 1/2, 1/4.
   awk -v cpu="$cpu" -v tri="$triangles" '
-    $1 == cpu { n++; x[n] = $2; y[n] = $3; sx += $2; sy += $3; sxx += $2 * $2; sxy += $2 * $3 }
+    $1 == cpu { n++; y[n] = $3 }
     END {
-      slope = (n * sxy - sx * sy) / (n * sxx - sx * sx); icept = (sy - slope * sx) / n
-      worst = 0; for (i = 1; i <= n; i++) { r = y[i] - (icept + slope * x[i]); if (r < 0) r = -r; if (r > worst) worst = r }
-      printf "| %s | %d | %.0f | %.0f | %.1f | %.0f |\n", cpu, y[1], icept, icept / tri, slope, worst
+      a = y[1] / 3 - 2 * y[2] + 8 * y[3] / 3          # value at s = 0
+      c = (8 * y[1] - 24 * y[2] + 16 * y[3]) / 3      # s^2 coefficient
+      b = y[1] - a - c                                 # s coefficient
+      printf "| %s | %.2f M | %.2f M | %.2f M | %.2f M | %.0f | %.2f M | %.2f M |\n", cpu, y[1] / 1e6, y[2] / 1e6,
+        y[3] / 1e6, a / 1e6, a / tri, b / 1e6, c / 1e6
     }' "$results"
 done
 echo
-echo "Exact QEMU counts of one render_frame call at each size (spanlight cost); the fit's residual"
-echo "says how well cost splits into a part per frame and a part per pixel."
+echo "Exact QEMU counts of one render_frame call at each size (spanlight cost), s the frame's scale."

@@ -109,6 +109,7 @@ bool random_case(std::mt19937& rng, int texel_range, SetUpCase& out) {
     out.v[k] = c.w[out.t.order[k]];
   }
   out.planes = lod_planes(out.t, at, out.u, out.v, c.frac);
+  out.planes.last_level = 24;  // a chain deeper than any lambda here: every pixel > 0 mixes
   return true;
 }
 
@@ -127,7 +128,7 @@ TEST_CASE("lod_at is lambda of the perspective mapping within 2^-8.5", "[mipmap]
     for (std::int32_t row = t.row_begin; row < t.row_end; row += 7) {
       TriangleSetup rows = t;
       for (Edge& e : rows.edge) e.skip_rows(row - t.row_begin);
-      planes.row_y = row * 256 + 128;
+      set_lod_row(planes, row);
       for (std::int32_t column = 0; column < 320; column += 5) {
         bool inside = true;
         for (const Edge& e : rows.edge) inside &= e.value_at(column) >= e.bias;
@@ -145,13 +146,18 @@ TEST_CASE("lod_at is lambda of the perspective mapping within 2^-8.5", "[mipmap]
   CHECK(worst <= std::exp2(-8.5));
 }
 
-// The walk holds one lambda per run (hold_lod): the mean of its ends', runs cut
-// until the ends differ by at most 1/16. Along a run lambda is monotonic here,
-// so every pixel's own lambda is within 1/32 + 2^-8.5 of the held one.
-TEST_CASE("a run's held lambda is within 1/32 + 2^-8.5 of each of its pixels'", "[mipmap]") {
+// The walk takes lambda linear on pieces of a row (plan_lod_piece) and gives
+// each run its level band and mix weights (run_level). A pixel's weight is
+// within 0.038 of its own exact lambda (the bound derived in lod.hpp) where
+// lambda keeps its curvature's sign on the piece. Where the larger of the two
+// derivatives changes between the piece's check points (a corner of the max) the
+// chord can cut the corner: that is not bounded by the derivation, so the test
+// asks that at most 1 pixel in 1000 lies beyond 0.038 and none beyond a quarter
+// level (measured here: 75 of 334,783 pixels, worst 0.16).
+TEST_CASE("a pixel's lambda from its run is within 0.038 of its own but at corners", "[mipmap]") {
   std::mt19937 rng(0x5eed16);
-  const double bound = 1.0 / 32 + std::exp2(-8.5);
-  int pixels = 0, runs = 0;
+  const double bound = 0.038;
+  int pixels = 0, runs = 0, beyond = 0;
   double worst = 0;
   for (int n = 0; n < 300; ++n) {
     SetUpCase sc;
@@ -177,20 +183,26 @@ TEST_CASE("a run's held lambda is within 1/32 + 2^-8.5 of each of its pixels'", 
     TriangleSetup rows = t;
     rasterize_rows(rows, 320, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
       if (row % 5 != 0) return;
-      planes.row_y = row * 256 + 128;
+      set_lod_row(planes, row);
       walk_span<0, true, false, true>(rows, attrs, needs, control, divide, c0, c1,
                                        [&](std::int32_t column, std::int32_t count, const PixelRun<0>& r) {
         ++runs;
         for (std::int32_t k = 0; k < count; ++k) {
           const double exact = exact_lambda(t, c, column + k + 0.5, row + 0.5);
-          if (!std::isfinite(exact) || r.lod == lod_level_zero) continue;
-          worst = std::max(worst, std::abs(r.lod / 256.0 - exact));
+          // Only the mixed band carries the pixel's lambda; the bands beyond the chain clamp it.
+          if (!std::isfinite(exact) || r.level.one_level) continue;
+          const std::int32_t f = (r.level.base + k * r.level.step) >> 8;
+          CHECK((f >= 0 && f < 256));  // the run keeps one band
+          const double got = r.level.level + f / 256.0;
+          worst = std::max(worst, std::abs(got - exact));
+          if (std::abs(got - exact) > bound) ++beyond;
           ++pixels;
         }
       });
     });
   }
-  INFO("runs " << runs << ", pixels " << pixels << ", worst " << worst);
+  INFO("runs " << runs << ", pixels " << pixels << ", beyond the bound " << beyond << ", worst " << worst);
   CHECK(pixels > 20000);
-  CHECK(worst <= bound);
+  CHECK(beyond <= pixels / 1000);
+  CHECK(worst <= 0.25);
 }

@@ -119,7 +119,12 @@ TEST_CASE("the trilinear sampler mixes two bilinear levels exactly as the spec's
           x = static_cast<std::uint32_t>((x16 >> (16 - frac)) - (1 << (frac - 1)));
           y = static_cast<std::uint32_t>((y16 >> (16 - frac)) - (1 << (frac - 1)));
         }
-        const Colour got = TrilinearSampler::of(c.data, g0, lod)(x, y);
+        std::int32_t one = 1;
+        const RunLevel level = run_level(lod << 8, 0, last, one);
+        Colour got{};
+        if (wrap == Wrap::repeat) got = TrilinearSampler<Wrap::repeat>::of(c.data, g0, level)(x, y, 0);
+        if (wrap == Wrap::clamp) got = TrilinearSampler<Wrap::clamp>::of(c.data, g0, level)(x, y, 0);
+        if (wrap == Wrap::border) got = TrilinearSampler<Wrap::border>::of(c.data, g0, level)(x, y, 0);
         const std::int32_t d = lod <= 0 ? 0 : std::min(lod, last * 256);
         const int k = d >> 8, k1 = std::min(k + 1, last);
         const std::uint64_t f = static_cast<std::uint64_t>(d & 255);

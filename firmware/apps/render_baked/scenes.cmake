@@ -8,6 +8,7 @@ set(SPANLIGHT_BAKED_SCENES
   "horizon|scenes/horizon.json|"
   "textured_room|scenes/textured_room.json|--format rgb565 --depth-bits 16"
   "textured_room_nearest|scenes/textured_room_nearest.json|--format rgb565 --depth-bits 16"
+  "textured_room_trilinear|scenes/textured_room_trilinear.json|--format rgb565 --depth-bits 16"
   "mesh_bear|scenes/mesh_bear.json|--format rgb565 --depth-bits 16"
   "v2_mip_floor|scenes/v2_mip_floor.json|"
   "v2_falloff_corridor|scenes/v2_falloff_corridor.json|"

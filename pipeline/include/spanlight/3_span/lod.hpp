@@ -14,10 +14,20 @@
 // on x). So along a row the numerator of d/dx is constant and that of d/dy is
 // affine in the column: per run, a few products and three logarithms.
 //
-// A run holds one lambda: the mean of its ends', the run cut in halves until
-// they differ by at most 1/16 (hold_lod). Where lambda is monotonic along the
-// run, a pixel's own is then within 1/32 + 2^-8.5 of the held one; tests/mipmap
-// checks that bound on random triangles.
+// Along a row lambda is taken linear on pieces of 2^m pixels (LodPiece): its
+// value at the piece's ends, the piece halved until the middle pixel's lambda
+// lies within lod_chord_tolerance of the chord. Where lambda keeps the sign of
+// its curvature on a piece, the chord's distance to it is at most twice its
+// distance at the middle (a concave function zero at both ends is at most
+// twice its middle value anywhere between). With e = 2^-10.4 the error of one
+// evaluation (lod_q16_at), a pixel's lambda is within 2 (1/64 + 2e) (the chord
+// of the exact ends) + e (its ends) + 2^-10 (the step's rounding) + 2^-9 (the
+// mix weight's Q.8 rounding) < 0.038 of its own. The quarters are checked too,
+// because lambda is the larger of two terms: where the larger changes inside a
+// piece the curvature's sign changes, and a corner between check points can
+// be cut by the chord beyond that bound (tests/mipmap: 1 pixel in 4,500 of its
+// random triangles, by at most 0.16 of a level, which moves the colour by that
+// fraction of the two levels' difference).
 #pragma once
 
 #include <cstdint>
@@ -30,7 +40,6 @@
 namespace spanlight {
 
 inline constexpr int lod_frac_bits = 8;                       // lambda in Q.8
-inline constexpr std::int32_t lod_level_zero = INT32_MIN / 2;  // rho = 0: magnified without end
 
 // log2(1 + i/32) in Q.16, i = 0..32.
 inline constexpr std::uint32_t log2_q16_table[33] = {
@@ -66,7 +75,9 @@ struct LodPlanes {
   std::int64_t b[2], ax[2], ay[2];
   int e_shift;               // H sums E_i >> e_shift (E_i < 2^31 then)
   std::int32_t constant_q16; // twice the log of the constant factors (below), Q.16
-  std::int32_t row_y;        // the current row's centre in subpixels (the caller sets it per row)
+  std::int32_t row_y;        // the current row's centre in subpixels (set_lod_row)
+  std::int32_t along_x_q16;  // log2 of d/dx's squared length on that row (constant along it); INT32_MIN: zero
+  std::int32_t last_level;   // the texture's level_count - 1 (the caller sets it)
 };
 
 // From the setup, its window vertices in setup order and the uv at them.
@@ -108,45 +119,114 @@ constexpr LodPlanes lod_planes(const TriangleSetup& t, const ScreenVertex* const
   return p;
 }
 
-// lambda (Q.8) at column c of the current row: the larger derivative length over
+// The row whose pixel centres lod_q16_at evaluates: d/dx's numerator b y_s + ax
+// is the same all along it, so its length's logarithm is taken once.
+constexpr void set_lod_row(LodPlanes& p, std::int32_t row) {
+  p.row_y = row * 256 + 128;
+  const std::int64_t xu = p.b[0] * p.row_y + p.ax[0], xv = p.b[1] * p.row_y + p.ax[1];
+  p.along_x_q16 = xu == 0 && xv == 0 ? INT32_MIN : log2_length2_q16(xu, xv);
+}
+
+// lambda (Q.16) at column c of the current row: the larger derivative length over
 // H^2, H = sum E_i w_i (each E_i >> e_shift <= 2^31 inside, times w_i < 2^31: the
 // sum fits 64 bits unsigned; it is at least D w_min, so the dropped bits are
 // 2^-30 w_max / w_min of it). Four Q.16 logarithms (2^-12.3 each, the length's
-// counted half) and the final rounding (2^-9): |error| < 2^-9 + 3.5 * 2^-12.3 < 2^-8.5
+// counted half) and the halving: |error| < 3.5 * 2^-12.3 + 2^-17 < 2^-10.4
 // against the exact lambda at that pixel centre.
-constexpr std::int32_t lod_at(const LodPlanes& p, const TriangleSetup& t, std::int32_t column) {
+inline constexpr std::int32_t lod_q16_zero = -(std::int32_t{256} << 16);  // rho = 0: magnified without end
+constexpr std::int32_t lod_q16_at(const LodPlanes& p, const TriangleSetup& t, std::int32_t column) {
   std::uint64_t h = 0;
   for (int i = 0; i < 3; ++i) {
     const std::int64_t e = t.edge[i].value_at(column);
     if (e > 0) h += fixedpoint::mul_u32(static_cast<std::uint32_t>(e >> p.e_shift), t.omega[i]);
   }
-  if (h == 0) return lod_level_zero;
-  const std::int64_t x_s = std::int64_t{column} * 256 + 128, y_s = p.row_y;
-  const std::int64_t xu = p.b[0] * y_s + p.ax[0], xv = p.b[1] * y_s + p.ax[1];
+  if (h == 0) return lod_q16_zero;
+  const std::int64_t x_s = std::int64_t{column} * 256 + 128;
   // d/dy's numerator has the opposite sign (x_m - x): lengths do not see it.
   const std::int64_t yu = p.b[0] * x_s + p.ay[0], yv = p.b[1] * x_s + p.ay[1];
-  const bool flat_x = xu == 0 && xv == 0, flat_y = yu == 0 && yv == 0;
-  if (flat_x && flat_y) return lod_level_zero;
-  const std::int32_t along_x = flat_x ? INT32_MIN : log2_length2_q16(xu, xv);
+  const bool flat_y = yu == 0 && yv == 0;
+  const std::int32_t along_x = p.along_x_q16;
+  if (along_x == INT32_MIN && flat_y) return lod_q16_zero;
   const std::int32_t along_y = flat_y ? INT32_MIN : log2_length2_q16(yu, yv);
   const std::int32_t twice_q16 = (along_x > along_y ? along_x : along_y) + p.constant_q16 - 4 * log2_q16(h);
-  return (twice_q16 + 256) >> 9;  // / 2, to Q.8, rounded
+  // Kept within +-2^24 (+-256 levels, far beyond any chain): a piece's sums fit 32 bits.
+  const std::int32_t lambda = twice_q16 >> 1;
+  return lambda < lod_q16_zero ? lod_q16_zero : (lambda > -lod_q16_zero ? -lod_q16_zero : lambda);
 }
 
-// The lambda a run [column, run_end) holds, and where the run must end for
-// its ends' lambdas to lie within lod_run_spread of each other.
-inline constexpr std::int32_t lod_run_spread = 1 << (lod_frac_bits - 4);  // 1/16
-struct RunLod {
-  std::int32_t lod, run_end;
+// The same in Q.8, rounded (|error| < 2^-9 + 2^-10.4 < 2^-8.5).
+constexpr std::int32_t lod_at(const LodPlanes& p, const TriangleSetup& t, std::int32_t column) {
+  return (lod_q16_at(p, t, column) + 128) >> 8;
+}
+
+// lambda along a row from `begin`, linear up to (not including) `end`: value at
+// begin and step per pixel, Q.16; `end_value` is lambda at `end` when end is in the span.
+inline constexpr std::int32_t lod_chord_tolerance = 1 << (16 - 6);  // 1/64
+inline constexpr int lod_piece_log2 = 7;                            // 128 pixels: the step's rounding adds < 2^-10
+struct LodPiece {
+  std::int32_t begin, end;
+  std::int32_t value, step, end_value;
 };
-constexpr RunLod hold_lod(const LodPlanes& p, const TriangleSetup& t, std::int32_t column, std::int32_t run_end) {
-  const std::int32_t first = lod_at(p, t, column);
-  std::int32_t last = run_end - 1 > column ? lod_at(p, t, run_end - 1) : first;
-  while (run_end - column > 1 && (last - first > lod_run_spread || first - last > lod_run_spread)) {
-    run_end = column + (run_end - column) / 2;
-    last = run_end - 1 > column ? lod_at(p, t, run_end - 1) : first;
+
+// The piece from `column` (lambda there: `value`) within a span whose last pixel is `last`.
+constexpr LodPiece plan_lod_piece(const LodPlanes& p, const TriangleSetup& t, std::int32_t column, std::int32_t value,
+                                  std::int32_t last) {
+  if (column >= last) return {column, column + 1, value, 0, value};
+  int m = fixedpoint::bit_length(static_cast<std::uint32_t>(last - column)) - 1;  // 2^m <= last - column
+  m = m > lod_piece_log2 ? lod_piece_log2 : m;
+  std::int32_t end_value = lod_q16_at(p, t, column + (std::int32_t{1} << m));
+  auto near_chord = [&](std::int32_t at, std::int32_t chord) {
+    const std::int32_t d = lod_q16_at(p, t, at) - chord;
+    return d <= lod_chord_tolerance && -d <= lod_chord_tolerance;
+  };
+  while (m > 1) {
+    // The middle and the quarters: lambda's curvature changes sign where the larger
+    // derivative changes (a corner) and within the d/dy term (an inflection).
+    // Both ends within [-2^24, 2^24]: their sums and differences fit 32 bits.
+    const std::int32_t middle = lod_q16_at(p, t, column + (std::int32_t{1} << (m - 1)));
+    const std::int32_t chord = value + ((end_value - value) >> 1);
+    const std::int32_t quarter = (end_value - value) >> 2;
+    const bool linear = middle - chord <= lod_chord_tolerance && chord - middle <= lod_chord_tolerance &&
+                        near_chord(column + (std::int32_t{1} << (m - 2)), value + quarter) &&
+                        near_chord(column + 3 * (std::int32_t{1} << (m - 2)), end_value - quarter);
+    if (linear) break;
+    end_value = middle;
+    --m;
   }
-  return {static_cast<std::int32_t>((std::int64_t{first} + last) >> 1), run_end};
+  if (m == 1) {  // two pixels, both exact when the piece ends at its second
+    end_value = lod_q16_at(p, t, column + 1);
+    m = 0;
+  }
+  // The step rounded: after up to 2^7 pixels the sum strays by at most 2^6 * 2^-16 = 2^-10.
+  const std::int32_t step = (end_value - value + ((std::int32_t{1} << m) >> 1)) >> m;
+  return {column, column + (std::int32_t{1} << m), value, step, end_value};
+}
+
+// A run's level and mix. With d = lambda rounded to Q.8: below 0 the run reads
+// level 0 alone, at or above last_level the last level alone; else level
+// k = floor(d / 256) and k + 1, the weight of k + 1 at pixel i being
+// f_i = (base + i step) >> 8 in [0, 256).
+struct RunLevel {
+  std::int32_t level;  // k
+  std::int32_t base;   // lambda at the run's first pixel + 2^7 - k 2^16 (Q.16); 0 when one level
+  std::int32_t step;   // per pixel (Q.16); 0 when one level
+  bool one_level;
+};
+
+// -1 below level 0, last_level at or above it, else floor(d / 256).
+constexpr std::int32_t level_band(std::int32_t lambda_q16, std::int32_t last_level) {
+  const std::int32_t d = (lambda_q16 + 128) >> 8;
+  return d < 0 ? -1 : (d >= (last_level << 8) ? last_level : d >> 8);
+}
+
+// Cuts `count` (halving) until the run's first and last pixels, and so all
+// between (lambda is linear along it), are in the same band.
+constexpr RunLevel run_level(std::int32_t value, std::int32_t step, std::int32_t last_level, std::int32_t& count) {
+  const std::int32_t band = level_band(value, last_level);
+  while (count > 1 && level_band(value + (count - 1) * step, last_level) != band) count = (count + 1) >> 1;
+  if (band < 0) return {0, 0, 0, true};
+  if (band == last_level) return {last_level, 0, 0, true};
+  return {band, value + 128 - (band << 16), step, false};
 }
 
 }  // namespace spanlight

@@ -74,7 +74,7 @@ struct PixelRun {
   Stepped u, v;
   Stepped s[projector_slots(P)], t[projector_slots(P)], r[projector_slots(P)];  // Q3.28
   bool front[projector_slots(P)];  // q > 0 all along the run
-  std::int32_t lod;                // lambda at the run's middle pixel, Q.8 (trilinear objects; else 0)
+  RunLevel level;                  // the run's mip levels and mix (trilinear objects; else zero)
 };
 
 // Advances a stepped value by `count` pixels: what `count` rounds of the kernel's adds give.
@@ -275,6 +275,12 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
       for_each_projector<PS>(j0, j1, [&](int j) { projector[j].start(src, j, control, w0, w1, c0, c1); });
   }
 
+  // lambda along the span, linear on pieces (3_span/lod.hpp); the first is planned at c0.
+  LodPiece lod{c0, c0, 0, 0, 0};
+  if constexpr (UV && Lod) {
+    if (control.lod != nullptr) lod.end_value = lod_q16_at(*control.lod, t, c0);
+  }
+
   std::int32_t column = c0;
   for (;;) {
     // The run ends at the first event of any group (or at the next pixel when depth goes per pixel).
@@ -302,10 +308,10 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
     std::int32_t count = run_end - column;
     if constexpr (UV && Lod) {
       if (control.lod != nullptr) {
-        const RunLod held = hold_lod(*control.lod, t, column, run_end);
-        run_end = held.run_end;
-        count = run_end - column;
-        run.lod = held.lod;
+        if (column == lod.end) lod = plan_lod_piece(*control.lod, t, column, lod.end_value, c1);  // runs never pass a piece's end
+        if (run_end > lod.end) count = lod.end - column;
+        run.level = run_level(lod.value + (column - lod.begin) * lod.step, lod.step, control.lod->last_level, count);
+        run_end = column + count;
       }
     }
     run_pixels(column, count, run);

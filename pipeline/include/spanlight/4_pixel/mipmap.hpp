@@ -1,6 +1,7 @@
-// Stage 4e, trilinear sampling (scene format 2): a run's lambda (3_span/lod.hpp)
-// picks levels k = floor(d) and k + 1 (the last clamped), d = min(lambda, last
-// level), and mixes their bilinear samples by f = d - k with 8 fraction bits:
+// Stage 4e, trilinear sampling (scene format 2): a pixel's lambda (3_span/lod.hpp,
+// linear along a run that keeps one level band) picks levels k = floor(d) and
+// k + 1, d = lambda in Q.8 clamped to [0, last level], and mixes their bilinear
+// samples by f = d - k with 8 fraction bits:
 //
 //   c = round(((256 - f) b_k + f b_(k+1)) / 2^8),   lambda <= 0: c = b_0,
 //
@@ -12,7 +13,7 @@
 
 #include <cstdint>
 
-#include "spanlight/3_span/lod.hpp"
+#include "spanlight/3_span/lod.hpp"  // RunLevel
 #include "spanlight/4_pixel/colour.hpp"
 #include "spanlight/4_pixel/texture.hpp"
 #include "spanlight/scene.hpp"
@@ -31,7 +32,9 @@ constexpr MipLevel mip_level(const TextureData& texture, const TexelGrid& g0, in
   const TextureLevel& level = texture.levels[k];
   const auto extra = (std::uint32_t{1} << k) - 1u;  // half level-0 texels further back
   if (texture.wrap == Wrap::repeat) {
-    m.grid = {level.texels, level.stride, level.width, level.height, g0.frac, g0.x_shift + k, g0.y_shift + k};
+    // A side of one texel reads the same texel at both taps: its shift stops at 32.
+    const int x_shift = g0.x_shift + k > 32 ? 32 : g0.x_shift + k, y_shift = g0.y_shift + k > 32 ? 32 : g0.y_shift + k;
+    m.grid = {level.texels, level.stride, level.width, level.height, g0.frac, x_shift, y_shift};
     m.back_x = extra << (g0.x_shift - 1);
     m.back_y = extra << (g0.y_shift - 1);
   } else {
@@ -41,39 +44,41 @@ constexpr MipLevel mip_level(const TextureData& texture, const TexelGrid& g0, in
   return m;
 }
 
-// A repeating level's sums: a side of one texel (shift 32) reads texel 0 and its frame copy.
+// A repeating level's sums. A side of one texel (shift 32) reads texel 0 and its
+// frame copy: the texel index is taken in two shifts, each below 32.
 [[gnu::always_inline]] inline BilinearSums repeat_level_sums(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
-  const std::uint32_t x0 = g.x_shift >= 32 ? 0u : x >> g.x_shift, y0 = g.y_shift >= 32 ? 0u : y >> g.y_shift;
+  const std::uint32_t x0 = (x >> (g.x_shift - 1)) >> 1, y0 = (y >> (g.y_shift - 1)) >> 1;
   const std::uint32_t fx = (x >> (g.x_shift - 8)) & 255u, fy = (y >> (g.y_shift - 8)) & 255u;
   return footprint_sums({g.texels + static_cast<std::int32_t>(y0) * g.stride + static_cast<std::int32_t>(x0), fx, fy}, g.stride);
 }
 
-[[gnu::always_inline]] inline BilinearSums level_sums(const MipLevel& m, Wrap wrap, std::uint32_t x, std::uint32_t y) {
+template <Wrap W>
+[[gnu::always_inline]] inline BilinearSums level_sums(const MipLevel& m, std::uint32_t x, std::uint32_t y) {
   x -= m.back_x;
   y -= m.back_y;
-  if (wrap == Wrap::repeat) return repeat_level_sums(m.grid, x, y);
-  if (wrap == Wrap::clamp) return bilinear_clamp_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
-  return bilinear_border_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
+  if constexpr (W == Wrap::repeat) return repeat_level_sums(m.grid, x, y);
+  else if constexpr (W == Wrap::clamp) return bilinear_clamp_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
+  else return bilinear_border_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
 }
 
-// The sampler of one run: its two levels and their mix.
+// The sampler of one run (3_span/lod.hpp, RunLevel): one level, or two mixed by
+// the pixel's weight f_i = (base + i step) >> 8.
+template <Wrap W>
 struct TrilinearSampler {
   MipLevel lo, hi;
-  std::uint32_t f;  // weight of hi, /256
-  Wrap wrap;
+  std::int32_t base, step;
+  bool one_level;
 
-  static constexpr TrilinearSampler of(const TextureData& texture, const TexelGrid& g0, std::int32_t lod) {
-    const std::int32_t last = (texture.level_count - 1) << lod_frac_bits;
-    const std::int32_t d = lod <= 0 ? 0 : (lod > last ? last : lod);
-    const int k = d >> lod_frac_bits;
-    const int k1 = k + 1 < texture.level_count ? k + 1 : k;
-    return {mip_level(texture, g0, k), mip_level(texture, g0, k1), static_cast<std::uint32_t>(d & 255), texture.wrap};
+  static constexpr TrilinearSampler of(const TextureData& texture, const TexelGrid& g0, const RunLevel& level) {
+    const int k = level.level, k1 = level.one_level ? k : k + 1;
+    return {mip_level(texture, g0, k), mip_level(texture, g0, k1), level.base, level.step, level.one_level};
   }
 
-  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y) const {
-    const Texel16 a = unrounded(level_sums(lo, wrap, x, y));
-    if (f == 0) return colour_of((a.r + 0x8000u) >> 16, (a.g + 0x8000u) >> 16, (a.b + 0x8000u) >> 16);
-    const Texel16 b = unrounded(level_sums(hi, wrap, x, y));
+  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y, std::int32_t i) const {
+    if (one_level) return round_sums(level_sums<W>(lo, x, y));
+    const Texel16 a = unrounded(level_sums<W>(lo, x, y));
+    const Texel16 b = unrounded(level_sums<W>(hi, x, y));
+    const auto f = static_cast<std::uint32_t>((base + i * step) >> 8);  // in [0, 256): the run keeps one level band
     // (256 - f) a + f b <= 255 * 2^24 < 2^32.
     auto mix = [&](std::uint32_t p, std::uint32_t q) { return ((256u - f) * p + f * q + (1u << 23)) >> 24; };
     return colour_of(mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #include "spanlight/3_span/walk.hpp"
@@ -79,26 +80,31 @@ template <Features F, template <int, int> class Sampler, typename Fn>
   return done;
 }
 
-// Calls fn(sample) with sample(x, y) -> Colour, the surface's sampler of stepped
-// coordinates for a run whose lambda is `lod` (trilinear only), instantiated
-// only for the kinds features F allows.
+// Calls fn(sample) with sample(x, y, i) -> Colour, the surface's sampler of
+// stepped coordinates at the run's pixel i (`level`: the run's mip levels,
+// trilinear only), instantiated only for the kinds features F allows.
 template <Features F, typename Fn>
-[[gnu::always_inline]] inline void with_sampler(const Surface& s, std::int32_t lod, Fn&& fn) {
+[[gnu::always_inline]] inline void with_sampler(const Surface& s, const RunLevel& level, Fn&& fn) {
   const TexelGrid g = s.grid;  // by value: the run loop keeps it in registers
   auto sampled = [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    using Sample = std::remove_cvref_t<decltype(sample)>;
+    auto at_pixel = [&sample](std::uint32_t x, std::uint32_t y, std::int32_t i) SPANLIGHT_LAMBDA_INLINE_ATTR {
+      if constexpr (std::is_invocable_v<const Sample&, std::uint32_t, std::uint32_t, std::int32_t>) return sample(x, y, i);
+      else return sample(x, y);
+    };
     if constexpr (F.tinted) {
       if (s.tinted) {
         const Colour colour = s.colour;
-        return fn([&sample, colour](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return modulate(colour, sample(x, y)); });
+        return fn([&at_pixel, colour](std::uint32_t x, std::uint32_t y, std::int32_t i) SPANLIGHT_LAMBDA_INLINE_ATTR { return modulate(colour, at_pixel(x, y, i)); });
       }
     }
-    fn(sample);
+    fn(at_pixel);
   };
   auto as_signed = [](std::uint32_t x) SPANLIGHT_LAMBDA_INLINE_ATTR { return static_cast<std::int32_t>(x); };
   switch (s.kind) {
     case SurfaceKind::colour: {
       const Colour c = s.colour;
-      return fn([c](std::uint32_t, std::uint32_t) SPANLIGHT_LAMBDA_INLINE_ATTR { return c; });
+      return fn([c](std::uint32_t, std::uint32_t, std::int32_t) SPANLIGHT_LAMBDA_INLINE_ATTR { return c; });
     }
     case SurfaceKind::bilinear_repeat:
       if constexpr (F.bilinear) {
@@ -125,7 +131,13 @@ template <Features F, typename Fn>
       if constexpr (F.nearest && F.clamped) return sampled([g, as_signed](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest<Wrap::border>(g, as_signed(x), as_signed(y)); });
       break;
     case SurfaceKind::trilinear:
-      if constexpr (F.trilinear) return sampled(TrilinearSampler::of(*s.texture, g, lod));
+      if constexpr (F.trilinear) {
+        if (s.texture->wrap == Wrap::repeat) return sampled(TrilinearSampler<Wrap::repeat>::of(*s.texture, g, level));
+        if constexpr (F.clamped) {
+          if (s.texture->wrap == Wrap::clamp) return sampled(TrilinearSampler<Wrap::clamp>::of(*s.texture, g, level));
+          return sampled(TrilinearSampler<Wrap::border>::of(*s.texture, g, level));
+        }
+      }
       break;
   }
 }

@@ -195,6 +195,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
         if (needs.lod) {
           const ScreenVertex* const at[3] = {&corners[setup.order[0]], &corners[setup.order[1]], &corners[setup.order[2]]};
           lod = lod_planes(setup, at, {0, attrs.du1, attrs.du2}, {0, attrs.dv1, attrs.dv2}, object.uv_frac_bits);
+          lod.last_level = scene.textures[object.texture].level_count - 1;
           control.lod = &lod;
         }
       }
@@ -214,7 +215,9 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       with_walk_shape<Kernel::may_need_uv, (Kernel::may_need_projectors && P > 0)>(needs, [&](auto uv, auto projectors) {
         rasterize_rows(setup, view.width, view.row_begin, view.row_end, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
           const auto row_start = static_cast<std::uint32_t>((row - view.row_begin) * view.width);
-          lod.row_y = row * 256 + 128;
+          if constexpr (F.trilinear) {
+            if (control.lod != nullptr) set_lod_row(lod, row);
+          }
           walk_span<P, decltype(uv)::value, decltype(projectors)::value, F.trilinear>(
               setup, attrs, needs, control, divide, c0, c1,
               [&](std::int32_t column, std::int32_t count, const PixelRun<P>& run) SPANLIGHT_LAMBDA_INLINE_ATTR {

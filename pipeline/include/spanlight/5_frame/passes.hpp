@@ -205,13 +205,13 @@ struct ModulateKernel {
   }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
-    with_sampler<F>(surface, r.lod, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    with_sampler<F>(surface, r.level, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
       for_each_pixel(count, r.z, r.dz, r.u, r.v, [&](std::int32_t k, std::uint32_t z, std::uint32_t u, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
         const std::uint32_t pixel = i + static_cast<std::uint32_t>(k);
         if (z_equal_and_first(band.depth, band.tie_mask, depth, pixel, z)) {
           hooks.touched(Pass::modulate, pixel);
           typename Color::Storage* c = band.color + pixel * Color::per_pixel;
-          Color::store(c, modulate(Color::load(c), sample(u, v)));
+          Color::store(c, modulate(Color::load(c), sample(u, v, k)));
         }
       });
     });
@@ -242,7 +242,7 @@ struct FusedKernel {
   void run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
     bool any_light = false;
     for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { any_light |= may_light(r, j, count); });
-    with_sampler<F>(surface, r.lod, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    with_sampler<F>(surface, r.level, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
       if (!any_light) constant_light(i, count, r, sample);
       else lit(i, count, r, sample);
     });
@@ -261,7 +261,7 @@ struct FusedKernel {
         if (stored < d[k]) {
           d[k] = static_cast<DepthT>(stored);
           hooks.touched(Pass::fused, i + static_cast<std::uint32_t>(k));
-          Color::store(c + k * Color::per_pixel, shade(sample(u, v)));
+          Color::store(c + k * Color::per_pixel, shade(sample(u, v, k)));
         }
       });
     };
@@ -291,7 +291,7 @@ struct FusedKernel {
             if (add != black) light = Color::quantize(add_light(light, add));
           }
         });
-        Color::store(c + k * Color::per_pixel, modulate(light, sample(u, v)));
+        Color::store(c + k * Color::per_pixel, modulate(light, sample(u, v, k)));
       }
       for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { p[j].next(); });
     });

@@ -113,6 +113,11 @@ bool random_case(std::mt19937& rng, int texel_range, SetUpCase& out) {
   return true;
 }
 
+// lambda in Q.8, rounded: lod_q16_at's error and the rounding, 2^-10.4 + 2^-9 < 2^-8.5.
+std::int32_t lod_at(const LodPlanes& p, const TriangleSetup& t, std::int32_t column) {
+  return (lod_q16_at(p, t, column) + 128) >> 8;
+}
+
 }  // namespace
 
 TEST_CASE("lod_at is lambda of the perspective mapping within 2^-8.5", "[mipmap]") {

@@ -12,11 +12,12 @@
 //
 // (the pair's l_i,x l_k - l_i l_k,x vanishes at vertex m and does not depend
 // on x). So along a row the numerator of d/dx is constant and that of d/dy is
-// affine in the column: per run, a few products and three logarithms.
+// affine in the column: per evaluation, a few products and two logarithms
+// (d/dx's length is taken once a row).
 //
 // Along a row lambda is taken linear on pieces of 2^m pixels (LodPiece): its
-// value at the piece's ends, the piece halved until the middle pixel's lambda
-// lies within lod_chord_tolerance of the chord. Where lambda keeps the sign of
+// value at the piece's ends, the piece halved until lambda at its middle and
+// quarters lies within lod_chord_tolerance of the chord. Where lambda keeps the sign of
 // its curvature on a piece, the chord's distance to it is at most twice its
 // distance at the middle (a concave function zero at both ends is at most
 // twice its middle value anywhere between). With e = 2^-10.4 the error of one
@@ -38,8 +39,6 @@
 #include "spanlight/2_triangle/setup.hpp"
 
 namespace spanlight {
-
-inline constexpr int lod_frac_bits = 8;                       // lambda in Q.8
 
 // log2(1 + i/32) in Q.16, i = 0..32.
 inline constexpr std::uint32_t log2_q16_table[33] = {
@@ -154,11 +153,6 @@ constexpr std::int32_t lod_q16_at(const LodPlanes& p, const TriangleSetup& t, st
   return lambda < lod_q16_zero ? lod_q16_zero : (lambda > -lod_q16_zero ? -lod_q16_zero : lambda);
 }
 
-// The same in Q.8, rounded (|error| < 2^-9 + 2^-10.4 < 2^-8.5).
-constexpr std::int32_t lod_at(const LodPlanes& p, const TriangleSetup& t, std::int32_t column) {
-  return (lod_q16_at(p, t, column) + 128) >> 8;
-}
-
 // lambda along a row from `begin`, linear up to (not including) `end`: value at
 // begin and step per pixel, Q.16; `end_value` is lambda at `end` when end is in the span.
 inline constexpr std::int32_t lod_chord_tolerance = 1 << (16 - 6);  // 1/64
@@ -175,20 +169,18 @@ constexpr LodPiece plan_lod_piece(const LodPlanes& p, const TriangleSetup& t, st
   int m = fixedpoint::bit_length(static_cast<std::uint32_t>(last - column)) - 1;  // 2^m <= last - column
   m = m > lod_piece_log2 ? lod_piece_log2 : m;
   std::int32_t end_value = lod_q16_at(p, t, column + (std::int32_t{1} << m));
-  auto near_chord = [&](std::int32_t at, std::int32_t chord) {
-    const std::int32_t d = lod_q16_at(p, t, at) - chord;
-    return d <= lod_chord_tolerance && -d <= lod_chord_tolerance;
+  auto near = [](std::int32_t lambda, std::int32_t chord) {
+    return lambda - chord <= lod_chord_tolerance && chord - lambda <= lod_chord_tolerance;
   };
   while (m > 1) {
     // The middle and the quarters: lambda's curvature changes sign where the larger
     // derivative changes (a corner) and within the d/dy term (an inflection).
     // Both ends within [-2^24, 2^24]: their sums and differences fit 32 bits.
     const std::int32_t middle = lod_q16_at(p, t, column + (std::int32_t{1} << (m - 1)));
-    const std::int32_t chord = value + ((end_value - value) >> 1);
     const std::int32_t quarter = (end_value - value) >> 2;
-    const bool linear = middle - chord <= lod_chord_tolerance && chord - middle <= lod_chord_tolerance &&
-                        near_chord(column + (std::int32_t{1} << (m - 2)), value + quarter) &&
-                        near_chord(column + 3 * (std::int32_t{1} << (m - 2)), end_value - quarter);
+    const bool linear = near(middle, value + ((end_value - value) >> 1)) &&
+                        near(lod_q16_at(p, t, column + (std::int32_t{1} << (m - 2))), value + quarter) &&
+                        near(lod_q16_at(p, t, column + 3 * (std::int32_t{1} << (m - 2))), end_value - quarter);
     if (linear) break;
     end_value = middle;
     --m;

@@ -70,8 +70,8 @@ struct TrilinearSampler {
   bool one_level;
 
   static constexpr TrilinearSampler of(const TextureData& texture, const TexelGrid& g0, const RunLevel& level) {
-    const int k = level.level, k1 = level.one_level ? k : k + 1;
-    return {mip_level(texture, g0, k), mip_level(texture, g0, k1), level.base, level.step, level.one_level};
+    const MipLevel lo = mip_level(texture, g0, level.level);
+    return {lo, level.one_level ? lo : mip_level(texture, g0, level.level + 1), level.base, level.step, level.one_level};
   }
 
   [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y, std::int32_t i) const {

@@ -94,7 +94,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << "inline constexpr spanlight::Knobs knobs{.span_log2 = " << int(knobs.span_log2) << ", .tolerance_log2 = "
       << int(knobs.tolerance_log2) << ", .table_bits = " << int(knobs.table_bits) << ", .newton = " << int(knobs.newton)
       << ", .depth_bits = " << int(knobs.depth_bits) << ",\n    .format = features.format, .passes = spanlight::Passes::"
-      << (knobs.passes == Passes::fused ? "fused" : "multipass") << "};\n"
+      << (knobs.passes == Passes::fused ? "fused" : "multipass") << ",\n    .mip = spanlight::MipRule::" << knob_value(knobs, "mip") << "};\n"
       << "using Depth = " << (knobs.depth_bits <= 16 ? "std::uint16_t" : "std::uint32_t") << ";\n\n"
       << "inline constexpr const char* scene_name = " << cpp_string_literal(scene_name) << ";\n"
       << "inline constexpr std::uint16_t width = " << s.width << ";\n"

@@ -154,7 +154,7 @@ render_every_knob)
   i=0
   for knobs in "--span 1" "--span 64" "--table-bits 6" "--table-bits 12" "--newton 0" "--newton 2" \
       "--depth-bits 16" "--format rgb565" "--format rgb565-be" "--passes multipass" "--passes fused" \
-      "--tolerance 0" "--tolerance 10" \
+      "--tolerance 0" "--tolerance 10" "--mip segment" "--mip trilinear" \
       "--span 4 --table-bits 10 --newton 2 --depth-bits 16 --format rgb565 --passes multipass --tolerance 5"; do
     i=$((i + 1))
     # shellcheck disable=SC2086  # the knobs are meant to split

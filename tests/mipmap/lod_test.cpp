@@ -9,6 +9,7 @@
 // and the final rounding to Q.8: 2^-9 + 3.5 * 2^-12.3 < 2^-8.5.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -210,4 +211,56 @@ TEST_CASE("a pixel's lambda from its run is within 0.038 of its own but at corne
   CHECK(pixels > 20000);
   CHECK(beyond <= pixels / 1000);
   CHECK(worst <= 0.25);
+}
+
+TEST_CASE("MipRule::segment reads one level a run, the nearest to lambda at its segment's middle", "[mipmap]") {
+  std::mt19937 rng(0x5e9);
+  // Segments of one pixel (span_log2 0): each run's level is its own pixel's lambda rounded.
+  // lod_q16_at is within 2^-10.4 of lambda, so only a lambda that close to a half may round
+  // the other way; the finite difference of exact_lambda adds ~1e-6.
+  const double near_half = std::exp2(-10.4) + 1e-5;
+  int pixels = 0, checked = 0;
+  for (int n = 0; n < 100; ++n) {
+    SetUpCase sc;
+    if (!random_case(rng, 2048, sc)) continue;
+    const TriangleSetup& t = sc.t;
+    sc.planes.last_level = 6;  // some lambdas clamp at the top, some at 0
+    TriangleAttributes<0> attrs{};
+    attrs.u0 = sc.u[0];
+    attrs.du1 = sc.u[1] - sc.u[0];
+    attrs.du2 = sc.u[2] - sc.u[0];
+    attrs.v0 = sc.v[0];
+    attrs.dv1 = sc.v[1] - sc.v[0];
+    attrs.dv2 = sc.v[2] - sc.v[0];
+    const StepScale scale{{0, 0, 0}, {0, 0, 0}, static_cast<std::uint8_t>(sc.c.frac)};
+    const SpanNeeds needs{true, scale, 0, 0, true};
+    const std::uint16_t texels[1] = {1};
+    const std::uint8_t texel_bits[1] = {28};
+    for (const int span_log2 : {0, 6}) {
+      SpanControl control{span_log2, 5, &scale, sc.c.frac, texels, texel_bits, 0xFFFFFFFFu, &sc.planes, MipRule::segment};
+      const FixedDivide<8, 1> divide{};
+      TriangleSetup rows = t;
+      rasterize_rows(rows, 320, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
+        if (row % 7 != 0) return;
+        set_lod_row(sc.planes, row);
+        walk_span<0, true, false, true>(rows, attrs, needs, control, divide, c0, c1,
+                                         [&](std::int32_t column, std::int32_t count, const PixelRun<0>& r) {
+          REQUIRE(r.level.one_level);  // bilinear within the run
+          REQUIRE((r.level.level >= 0 && r.level.level <= 6));
+          if (span_log2 != 0) return;
+          REQUIRE(count == 1);
+          ++pixels;
+          const double lambda = exact_lambda(t, sc.c, column + 0.5, row + 0.5);
+          if (!std::isfinite(lambda)) return;
+          const double exact = std::clamp(lambda, 0.0, 6.0);
+          if (std::abs(exact - std::floor(exact) - 0.5) < near_half) return;
+          CHECK(r.level.level == static_cast<int>(std::lround(exact)));
+          ++checked;
+        });
+      });
+    }
+  }
+  INFO("pixels " << pixels << ", checked " << checked);
+  CHECK(checked > 5000);
+  CHECK(checked >= pixels * 99 / 100);
 }

@@ -85,7 +85,7 @@ TEST_CASE("a knob config survives writing and reading - bad ones are refused wit
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "spanlight_knob_config_test";
   std::filesystem::create_directories(dir);
   sweep::GridPoint config{Knobs{.span_log2 = 3, .tolerance_log2 = 2, .table_bits = 10, .newton = 0, .depth_bits = 16,
-                                .format = PixelFormat::rgb565_be, .passes = Passes::multipass},
+                                .format = PixelFormat::rgb565_be, .passes = Passes::multipass, .mip = MipRule::segment},
                           spanlight::FilterChoice::nearest};
   {
     std::ofstream(dir / "good.json") << analyze::to_json(config, R"({"psnr_db": 40})");
@@ -93,8 +93,8 @@ TEST_CASE("a knob config survives writing and reading - bad ones are refused wit
   CHECK(analyze::read_knob_config(dir / "good.json") == config);
 
   // Every knob by its knob_table name, values as typed (numbers as JSON numbers or strings).
-  const std::string good = R"({"spanlight_knobs": 2, "span": "8", "tolerance": 2, "table-bits": 10, "newton": 0,
-      "depth-bits": 16, "format": "rgb565-be", "passes": "multipass", "texture_filter": "nearest"})";
+  const std::string good = R"({"spanlight_knobs": 3, "span": "8", "tolerance": 2, "table-bits": 10, "newton": 0,
+      "depth-bits": 16, "format": "rgb565-be", "passes": "multipass", "mip": "segment", "texture_filter": "nearest"})";
   auto refused = [&](const std::string& name, const std::string& text) {
     std::ofstream(dir / name) << text;
   };
@@ -116,8 +116,8 @@ TEST_CASE("a knob config survives writing and reading - bad ones are refused wit
   CHECK_THROWS_WITH(analyze::read_knob_config(dir / "negative.json"), Catch::Matchers::Contains("newton: expected one of"));
   refused("bad_filter.json", replace(R"("nearest")", R"("trilinear")"));
   CHECK_THROWS_WITH(analyze::read_knob_config(dir / "bad_filter.json"), Catch::Matchers::Contains("texture_filter: expected one of"));
-  refused("version1.json", replace(R"("spanlight_knobs": 2)", R"("spanlight_knobs": 1)"));
-  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "version1.json"), Catch::Matchers::Contains("spanlight_knobs: expected 2"));
+  refused("version2.json", replace(R"("spanlight_knobs": 3)", R"("spanlight_knobs": 2)"));
+  CHECK_THROWS_WITH(analyze::read_knob_config(dir / "version2.json"), Catch::Matchers::Contains("spanlight_knobs: expected 3"));
   {
     std::ofstream(dir / "not_json.json") << "{span";
   }

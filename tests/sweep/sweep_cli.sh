@@ -43,9 +43,9 @@ expect_stdout_has "swept wide_uv: 16 configurations"
 expect_stdout_has "host: "
 for f in sweep.csv report.html front.md pareto_host.svg; do expect_file "$out/$f"; done
 expect_lines "$out/sweep.csv" 17
-head -n 1 "$out/sweep.csv" | grep -q ",label,span,tolerance,table-bits,newton,depth-bits,passes,filter," ||
+head -n 1 "$out/sweep.csv" | grep -q ",label,span,tolerance,table-bits,newton,depth-bits,passes,mip,filter," ||
   fail "the CSV's knob columns are not the knobs' names"
-grep -q "^wide_uv,rgb888,[0-9]*,span=64 tolerance=5 table-bits=8 newton=1 depth-bits=24 passes=fused filter=scene,64,5,8,1,24,fused,scene," \
+grep -q "^wide_uv,rgb888,[0-9]*,span=64 tolerance=5 table-bits=8 newton=1 depth-bits=24 passes=fused mip=trilinear filter=scene,64,5,8,1,24,fused,trilinear,scene," \
   "$out/sweep.csv" || fail "the default row is missing"
 grep -q "n/a: QEMU runs switched off" "$out/sweep.csv" || fail "target cost should be n/a without QEMU"
 ls "$out"/images/*-fixed.png >/dev/null 2>&1 || fail "no pictures written"
@@ -103,7 +103,7 @@ expect_file "$scratch/baked/baked_config.hpp"
 grep -q "takes them: --span $span " "$scratch/baked/baked_config.hpp" || fail "the baked knobs do not carry span $span"
 run_spanlight bake "$SCENES/wide_uv.json" --out "$scratch/baked2" --config "$scratch/knobs.json" --span 4
 expect_status 2
-echo '{"spanlight_knobs": 2, "span": 5}' >"$scratch/bad.json"
+echo '{"spanlight_knobs": 3, "span": 5}' >"$scratch/bad.json"
 run_spanlight bake "$SCENES/wide_uv.json" --out "$scratch/baked3" --config "$scratch/bad.json"
 expect_status 2
 expect_stderr_has "bad.json: span: expected one of 1, 2, 4, 8, 16, 32, 64"

@@ -114,7 +114,7 @@ TEST_CASE("the bench's arguments are the knob words, the filter and --per-pass",
   REQUIRE(set_knob(k, "passes", "multipass") == KnobError::ok);
   const std::vector<std::string> args = bench_arguments(GridPoint{k, FilterChoice::bilinear}, true);
   const std::vector<std::string> expected{"--span", "32", "--tolerance", "5", "--table-bits", "6", "--newton", "1",
-                                          "--depth-bits", "24", "--format", "rgb888", "--passes", "multipass",
+                                          "--depth-bits", "24", "--format", "rgb888", "--passes", "multipass", "--mip", "trilinear",
                                           "--filter", "bilinear", "--per-pass"};
   CHECK(args == expected);
   CHECK(args.size() + 1 <= 32);  // with the program's name: what the Cortex-M HAL passes at most

@@ -14,6 +14,9 @@ namespace spanlight {
 
 enum class PixelFormat : std::uint8_t { rgb888, rgb565, rgb565_be };  // rgb565_be: bytes swapped, as SPI panels take it
 enum class Passes : std::uint8_t { fused, multipass };                 // multipass: the paper's passes, the same bytes
+// How a trilinear texture picks its levels: the spec's two levels mixed per pixel, or one
+// level per span segment (lambda at the segment's middle pixel, rounded) read bilinear.
+enum class MipRule : std::uint8_t { trilinear, segment };
 
 struct Knobs {
   std::uint8_t span_log2 = 6;       // segments of at most 2^span_log2 pixels between exact divides
@@ -23,6 +26,7 @@ struct Knobs {
   std::uint8_t depth_bits = 24;     // depth buffer and shadow maps: 16 or 24 bits
   PixelFormat format = PixelFormat::rgb888;
   Passes passes = Passes::fused;
+  MipRule mip = MipRule::trilinear;
 
   friend constexpr bool operator==(const Knobs&, const Knobs&) = default;
 };
@@ -43,6 +47,7 @@ inline constexpr const char* newton[] = {"0", "1", "2"};
 inline constexpr const char* depth_bits[] = {"16", "24"};
 inline constexpr const char* format[] = {"rgb888", "rgb565", "rgb565-be"};
 inline constexpr const char* passes[] = {"fused", "multipass"};
+inline constexpr const char* mip[] = {"trilinear", "segment"};
 }  // namespace knob_values
 
 inline constexpr KnobInfo knob_table[] = {
@@ -57,6 +62,8 @@ inline constexpr KnobInfo knob_table[] = {
      knob_values::format, std::size(knob_values::format)},
     {"passes", "fused: one pass per pixel; multipass: the paper's passes (the same bytes)", knob_values::passes,
      std::size(knob_values::passes)},
+    {"mip", "trilinear: two mip levels mixed per pixel, as the scene format defines; segment: one level per span segment, read bilinear (cheaper, see docs/speed-accuracy.md)",
+     knob_values::mip, std::size(knob_values::mip)},
 };
 
 enum class KnobError : std::uint8_t { ok, unknown_name, bad_value };
@@ -82,7 +89,8 @@ constexpr KnobError set_knob(Knobs& knobs, std::string_view name, std::string_vi
     else if (name == "newton") knobs.newton = n;
     else if (name == "depth-bits") knobs.depth_bits = n == 0 ? 16 : 24;
     else if (name == "format") knobs.format = static_cast<PixelFormat>(n);
-    else knobs.passes = static_cast<Passes>(n);
+    else if (name == "passes") knobs.passes = static_cast<Passes>(n);
+    else knobs.mip = static_cast<MipRule>(n);
     return KnobError::ok;
   }
   return KnobError::unknown_name;
@@ -99,11 +107,12 @@ constexpr const char* knob_value(const Knobs& knobs, std::string_view name) {
   if (name == "depth-bits") return knobs.depth_bits == 16 ? "16" : "24";
   if (name == "format") return pick(knob_values::format, static_cast<unsigned>(knobs.format));
   if (name == "passes") return pick(knob_values::passes, static_cast<unsigned>(knobs.passes));
+  if (name == "mip") return pick(knob_values::mip, static_cast<unsigned>(knobs.mip));
   return "";
 }
 
 // Whether every field holds one of its allowed values (a Knobs built by hand may not): the
-// field is an index into its value list (span, tolerance, newton, format, passes), or
+// field is an index into its value list (span, tolerance, newton, format, passes, mip), or
 // table_bits = 6 + 2 * index, or depth 16 or 24. Checked per frame, so no string compares.
 constexpr bool knobs_valid(const Knobs& k) {
   const unsigned table_index = (k.table_bits - 6u) / 2u;  // wraps to a large value below 6
@@ -111,7 +120,8 @@ constexpr bool knobs_valid(const Knobs& k) {
          k.table_bits % 2 == 0 && table_index < std::size(knob_values::table_bits) &&
          k.newton < std::size(knob_values::newton) && (k.depth_bits == 16 || k.depth_bits == 24) &&
          static_cast<std::size_t>(k.format) < std::size(knob_values::format) &&
-         static_cast<std::size_t>(k.passes) < std::size(knob_values::passes);
+         static_cast<std::size_t>(k.passes) < std::size(knob_values::passes) &&
+         static_cast<std::size_t>(k.mip) < std::size(knob_values::mip);
 }
 
 // Parses `--name value` pairs (argv style); stops at the first error and says where.

@@ -221,4 +221,12 @@ constexpr RunLevel run_level(std::int32_t value, std::int32_t step, std::int32_t
   return {band, value + 128 - (band << 16), step, false};
 }
 
+// MipRule::segment: one level for the pixels first..last of a uv segment, read
+// bilinear: lambda at the middle pixel rounded to the nearest level, clamped to
+// [0, last_level]. lambda within +-2^24: adding the half does not overflow.
+constexpr RunLevel segment_level(const LodPlanes& p, const TriangleSetup& t, std::int32_t first, std::int32_t last) {
+  const std::int32_t k = (lod_q16_at(p, t, first + ((last - first) >> 1)) + (1 << 15)) >> 16;
+  return {k < 0 ? 0 : (k > p.last_level ? p.last_level : k), 0, 0, true};
+}
+
 }  // namespace spanlight

@@ -30,6 +30,7 @@
 #include "spanlight/3_span/lod.hpp"
 #include "spanlight/3_span/segments.hpp"
 #include "spanlight/features.hpp"
+#include "spanlight/knobs.hpp"
 
 namespace spanlight {
 
@@ -59,6 +60,7 @@ struct SpanControl {
   const std::uint8_t* projector_texel_bits;  // log2 of Q3.28 units per texel of each projector's image
   std::uint32_t z_limit;             // DepthFormat::z_limit: the deepest a stepped depth may go
   const LodPlanes* lod = nullptr;    // the triangle's, when the object is trilinear
+  MipRule mip = MipRule::trilinear;  // segment: one level per uv segment (Knobs::mip)
 };
 
 // One value along a run: at the first pixel, and how it moves per pixel
@@ -276,9 +278,11 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
   }
 
   // lambda along the span, linear on pieces (3_span/lod.hpp); the first is planned at c0.
+  // With MipRule::segment, lod.end is where the uv segment whose level is held ends.
   LodPiece lod{c0, c0, 0, 0, 0};
+  const bool level_per_segment = control.mip == MipRule::segment;
   if constexpr (UV && Lod) {
-    if (control.lod != nullptr) lod.end_value = lod_q16_at(*control.lod, t, c0);
+    if (control.lod != nullptr && !level_per_segment) lod.end_value = lod_q16_at(*control.lod, t, c0);
   }
 
   std::int32_t column = c0;
@@ -307,7 +311,12 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
     }
     std::int32_t count = run_end - column;
     if constexpr (UV && Lod) {
-      if (control.lod != nullptr) {
+      if (control.lod != nullptr && level_per_segment) {
+        if (column == lod.end) {  // a new uv segment: runs never pass its end
+          lod.end = uv.segment_end < c1 + 1 ? uv.segment_end : c1 + 1;
+          run.level = segment_level(*control.lod, t, column, lod.end - 1);
+        }
+      } else if (control.lod != nullptr) {
         if (column == lod.end) lod = plan_lod_piece(*control.lod, t, column, lod.end_value, c1);  // runs never pass a piece's end
         if (run_end > lod.end) count = lod.end - column;
         run.level = run_level(lod.value + (column - lod.begin) * lod.step, lod.step, control.lod->last_level, count);

@@ -164,7 +164,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
                       .uv_frac_bits = 8,
                       .projector_texels = projector_texels,
                       .projector_texel_bits = projector_texel_bits,
-                      .z_limit = z_limit};
+                      .z_limit = z_limit,
+                      .mip = knobs.mip};
   const int pc = scene.projector_count;
   const bool banded = view.row_begin > 0 || view.row_end < view.height;  // a whole frame needs no row test
 

@@ -79,8 +79,9 @@ struct TrilinearSampler {
     const Texel16 a = unrounded(level_sums<W>(lo, x, y));
     const Texel16 b = unrounded(level_sums<W>(hi, x, y));
     const auto f = static_cast<std::uint32_t>((base + i * step) >> 8);  // in [0, 256): the run keeps one level band
-    // (256 - f) a + f b <= 255 * 2^24 < 2^32.
-    auto mix = [&](std::uint32_t p, std::uint32_t q) { return ((256u - f) * p + f * q + (1u << 23)) >> 24; };
+    // (256 - f) a + f b = 256 a + f (b - a), one product: the sum is <= 255 * 2^24 < 2^32,
+    // so the unsigned arithmetic mod 2^32 (b - a may wrap) gives it exactly.
+    auto mix = [&](std::uint32_t p, std::uint32_t q) { return ((p << 8) + f * (q - p) + (1u << 23)) >> 24; };
     return colour_of(mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b));
   }
 };

@@ -61,8 +61,33 @@ template <Wrap W>
   else return bilinear_border_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
 }
 
-// The sampler of one run (3_span/lod.hpp, RunLevel): one level, or two mixed by
-// the pixel's weight f_i = (base + i step) >> 8.
+// One level of a run, read alone (lambda <= 0, or the last level).
+template <Wrap W>
+struct OneLevelSampler {
+  MipLevel m;
+  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y) const { return round_sums(level_sums<W>(m, x, y)); }
+};
+
+// Levels k and k + 1 mixed by the pixel's weight f_i = (base + i step) >> 8.
+template <Wrap W>
+struct TwoLevelSampler {
+  MipLevel lo, hi;
+  std::int32_t base, step;
+
+  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y, std::int32_t i) const {
+    const Texel16 a = unrounded(level_sums<W>(lo, x, y));
+    const Texel16 b = unrounded(level_sums<W>(hi, x, y));
+    const auto f = static_cast<std::uint32_t>((base + i * step) >> 8);  // in [0, 256): the run keeps one level band
+    // (256 - f) a + f b = 256 a + f (b - a), one product: the sum is <= 255 * 2^24 < 2^32,
+    // so the unsigned arithmetic mod 2^32 (b - a may wrap) gives it exactly.
+    auto mix = [&](std::uint32_t p, std::uint32_t q) { return ((p << 8) + f * (q - p) + (1u << 23)) >> 24; };
+    return colour_of(mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b));
+  }
+};
+
+// Either sampler of a run (3_span/lod.hpp, RunLevel). The run loop (surface.hpp)
+// picks one of the two above once per run (with_run_levels below); this one
+// tests one_level per pixel.
 template <Wrap W>
 struct TrilinearSampler {
   MipLevel lo, hi;
@@ -75,15 +100,18 @@ struct TrilinearSampler {
   }
 
   [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y, std::int32_t i) const {
-    if (one_level) return round_sums(level_sums<W>(lo, x, y));
-    const Texel16 a = unrounded(level_sums<W>(lo, x, y));
-    const Texel16 b = unrounded(level_sums<W>(hi, x, y));
-    const auto f = static_cast<std::uint32_t>((base + i * step) >> 8);  // in [0, 256): the run keeps one level band
-    // (256 - f) a + f b = 256 a + f (b - a), one product: the sum is <= 255 * 2^24 < 2^32,
-    // so the unsigned arithmetic mod 2^32 (b - a may wrap) gives it exactly.
-    auto mix = [&](std::uint32_t p, std::uint32_t q) { return ((p << 8) + f * (q - p) + (1u << 23)) >> 24; };
-    return colour_of(mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b));
+    if (one_level) return OneLevelSampler<W>{lo}(x, y);
+    return TwoLevelSampler<W>{lo, hi, base, step}(x, y, i);
   }
 };
+
+// Calls sampled with the run's sampler, its one_level settled here once per run so
+// the loop of pixels carries no test of it (each sampler is its own loop).
+template <Wrap W, typename Fn>
+[[gnu::always_inline]] inline void with_run_levels(const TextureData& texture, const TexelGrid& g0, const RunLevel& level, Fn&& sampled) {
+  const MipLevel lo = mip_level(texture, g0, level.level);
+  if (level.one_level) return sampled(OneLevelSampler<W>{lo});
+  sampled(TwoLevelSampler<W>{lo, mip_level(texture, g0, level.level + 1), level.base, level.step});
+}
 
 }  // namespace spanlight

@@ -132,10 +132,10 @@ template <Features F, typename Fn>
       break;
     case SurfaceKind::trilinear:
       if constexpr (F.trilinear) {
-        if (s.texture->wrap == Wrap::repeat) return sampled(TrilinearSampler<Wrap::repeat>::of(*s.texture, g, level));
+        if (s.texture->wrap == Wrap::repeat) return with_run_levels<Wrap::repeat>(*s.texture, g, level, sampled);
         if constexpr (F.clamped) {
-          if (s.texture->wrap == Wrap::clamp) return sampled(TrilinearSampler<Wrap::clamp>::of(*s.texture, g, level));
-          return sampled(TrilinearSampler<Wrap::border>::of(*s.texture, g, level));
+          if (s.texture->wrap == Wrap::clamp) return with_run_levels<Wrap::clamp>(*s.texture, g, level, sampled);
+          return with_run_levels<Wrap::border>(*s.texture, g, level, sampled);
         }
       }
       break;

@@ -65,7 +65,9 @@ template <Wrap W>
 template <Wrap W>
 struct OneLevelSampler {
   MipLevel m;
-  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y) const { return round_sums(level_sums<W>(m, x, y)); }
+  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y, std::int32_t) const {
+    return round_sums(level_sums<W>(m, x, y));
+  }
 };
 
 // Levels k and k + 1 mixed by the pixel's weight f_i = (base + i step) >> 8.
@@ -85,28 +87,9 @@ struct TwoLevelSampler {
   }
 };
 
-// Either sampler of a run (3_span/lod.hpp, RunLevel). The run loop (surface.hpp)
-// picks one of the two above once per run (with_run_levels below); this one
-// tests one_level per pixel.
-template <Wrap W>
-struct TrilinearSampler {
-  MipLevel lo, hi;
-  std::int32_t base, step;
-  bool one_level;
-
-  static constexpr TrilinearSampler of(const TextureData& texture, const TexelGrid& g0, const RunLevel& level) {
-    const MipLevel lo = mip_level(texture, g0, level.level);
-    return {lo, level.one_level ? lo : mip_level(texture, g0, level.level + 1), level.base, level.step, level.one_level};
-  }
-
-  [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y, std::int32_t i) const {
-    if (one_level) return OneLevelSampler<W>{lo}(x, y);
-    return TwoLevelSampler<W>{lo, hi, base, step}(x, y, i);
-  }
-};
-
-// Calls sampled with the run's sampler, its one_level settled here once per run so
-// the loop of pixels carries no test of it (each sampler is its own loop).
+// Calls sampled with the run's sampler (3_span/lod.hpp, RunLevel): one_level is
+// settled here once per run, so the loop of pixels carries no test of it (each
+// sampler is its own loop).
 template <Wrap W, typename Fn>
 [[gnu::always_inline]] inline void with_run_levels(const TextureData& texture, const TexelGrid& g0, const RunLevel& level, Fn&& sampled) {
   const MipLevel lo = mip_level(texture, g0, level.level);

@@ -119,6 +119,32 @@ std::int32_t lod_at(const LodPlanes& p, const TriangleSetup& t, std::int32_t col
   return (lod_q16_at(p, t, column) + 128) >> 8;
 }
 
+// Walks every row_stride-th row of the case's triangle (uv only, no projectors) with
+// segments of at most 2^span_log2 pixels and the given mip rule: on_run(row, column, count, run).
+template <typename OnRun>
+void walk_case(SetUpCase& sc, int span_log2, MipRule mip, int row_stride, OnRun&& on_run) {
+  TriangleAttributes<0> attrs{};
+  attrs.u0 = sc.u[0];
+  attrs.du1 = sc.u[1] - sc.u[0];
+  attrs.du2 = sc.u[2] - sc.u[0];
+  attrs.v0 = sc.v[0];
+  attrs.dv1 = sc.v[1] - sc.v[0];
+  attrs.dv2 = sc.v[2] - sc.v[0];
+  const StepScale scale{{0, 0, 0}, {0, 0, 0}, static_cast<std::uint8_t>(sc.c.frac)};
+  const SpanNeeds needs{true, scale, 0, 0, true};
+  const std::uint16_t texels[1] = {1};
+  const std::uint8_t texel_bits[1] = {28};
+  const SpanControl control{span_log2, 5, &scale, sc.c.frac, texels, texel_bits, 0xFFFFFFFFu, &sc.planes, mip};
+  const FixedDivide<8, 1> divide{};
+  TriangleSetup rows = sc.t;
+  rasterize_rows(rows, 320, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
+    if (row % row_stride != 0) return;
+    set_lod_row(sc.planes, row);
+    walk_span<0, true, false, true>(rows, attrs, needs, control, divide, c0, c1,
+                                     [&](std::int32_t column, std::int32_t count, const PixelRun<0>& r) { on_run(row, column, count, r); });
+  });
+}
+
 }  // namespace
 
 TEST_CASE("lod_at is lambda of the perspective mapping within 2^-8.5", "[mipmap]") {
@@ -170,41 +196,19 @@ TEST_CASE("a pixel's lambda from its run is within 0.038 of its own but at corne
     if (!random_case(rng, 2048, sc)) continue;
     const Case& c = sc.c;
     const TriangleSetup& t = sc.t;
-    const std::int32_t(&u)[3] = sc.u;
-    const std::int32_t(&v)[3] = sc.v;
-    LodPlanes& planes = sc.planes;
-    TriangleAttributes<0> attrs{};
-    attrs.u0 = u[0];
-    attrs.du1 = u[1] - u[0];
-    attrs.du2 = u[2] - u[0];
-    attrs.v0 = v[0];
-    attrs.dv1 = v[1] - v[0];
-    attrs.dv2 = v[2] - v[0];
-    const StepScale scale{{0, 0, 0}, {0, 0, 0}, static_cast<std::uint8_t>(c.frac)};
-    const SpanNeeds needs{true, scale, 0, 0, true};
-    const std::uint16_t texels[1] = {1};
-    const std::uint8_t texel_bits[1] = {28};
-    SpanControl control{6, 5, &scale, c.frac, texels, texel_bits, 0xFFFFFFFFu, &planes};
-    const FixedDivide<8, 1> divide{};
-    TriangleSetup rows = t;
-    rasterize_rows(rows, 320, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
-      if (row % 5 != 0) return;
-      set_lod_row(planes, row);
-      walk_span<0, true, false, true>(rows, attrs, needs, control, divide, c0, c1,
-                                       [&](std::int32_t column, std::int32_t count, const PixelRun<0>& r) {
-        ++runs;
-        for (std::int32_t k = 0; k < count; ++k) {
-          const double exact = exact_lambda(t, c, column + k + 0.5, row + 0.5);
-          // Only the mixed band carries the pixel's lambda; the bands beyond the chain clamp it.
-          if (!std::isfinite(exact) || r.level.one_level) continue;
-          const std::int32_t f = (r.level.base + k * r.level.step) >> 8;
-          CHECK((f >= 0 && f < 256));  // the run keeps one band
-          const double got = r.level.level + f / 256.0;
-          worst = std::max(worst, std::abs(got - exact));
-          if (std::abs(got - exact) > bound) ++beyond;
-          ++pixels;
-        }
-      });
+    walk_case(sc, 6, MipRule::trilinear, 5, [&](std::int32_t row, std::int32_t column, std::int32_t count, const PixelRun<0>& r) {
+      ++runs;
+      for (std::int32_t k = 0; k < count; ++k) {
+        const double exact = exact_lambda(t, c, column + k + 0.5, row + 0.5);
+        // Only the mixed band carries the pixel's lambda; the bands beyond the chain clamp it.
+        if (!std::isfinite(exact) || r.level.one_level) continue;
+        const std::int32_t f = (r.level.base + k * r.level.step) >> 8;
+        CHECK((f >= 0 && f < 256));  // the run keeps one band
+        const double got = r.level.level + f / 256.0;
+        worst = std::max(worst, std::abs(got - exact));
+        if (std::abs(got - exact) > bound) ++beyond;
+        ++pixels;
+      }
     });
   }
   INFO("runs " << runs << ", pixels " << pixels << ", beyond the bound " << beyond << ", worst " << worst);
@@ -225,38 +229,19 @@ TEST_CASE("MipRule::segment reads one level a run, the nearest to lambda at its 
     if (!random_case(rng, 2048, sc)) continue;
     const TriangleSetup& t = sc.t;
     sc.planes.last_level = 6;  // some lambdas clamp at the top, some at 0
-    TriangleAttributes<0> attrs{};
-    attrs.u0 = sc.u[0];
-    attrs.du1 = sc.u[1] - sc.u[0];
-    attrs.du2 = sc.u[2] - sc.u[0];
-    attrs.v0 = sc.v[0];
-    attrs.dv1 = sc.v[1] - sc.v[0];
-    attrs.dv2 = sc.v[2] - sc.v[0];
-    const StepScale scale{{0, 0, 0}, {0, 0, 0}, static_cast<std::uint8_t>(sc.c.frac)};
-    const SpanNeeds needs{true, scale, 0, 0, true};
-    const std::uint16_t texels[1] = {1};
-    const std::uint8_t texel_bits[1] = {28};
     for (const int span_log2 : {0, 6}) {
-      SpanControl control{span_log2, 5, &scale, sc.c.frac, texels, texel_bits, 0xFFFFFFFFu, &sc.planes, MipRule::segment};
-      const FixedDivide<8, 1> divide{};
-      TriangleSetup rows = t;
-      rasterize_rows(rows, 320, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
-        if (row % 7 != 0) return;
-        set_lod_row(sc.planes, row);
-        walk_span<0, true, false, true>(rows, attrs, needs, control, divide, c0, c1,
-                                         [&](std::int32_t column, std::int32_t count, const PixelRun<0>& r) {
-          REQUIRE(r.level.one_level);  // bilinear within the run
-          REQUIRE((r.level.level >= 0 && r.level.level <= 6));
-          if (span_log2 != 0) return;
-          REQUIRE(count == 1);
-          ++pixels;
-          const double lambda = exact_lambda(t, sc.c, column + 0.5, row + 0.5);
-          if (!std::isfinite(lambda)) return;
-          const double exact = std::clamp(lambda, 0.0, 6.0);
-          if (std::abs(exact - std::floor(exact) - 0.5) < near_half) return;
-          CHECK(r.level.level == static_cast<int>(std::lround(exact)));
-          ++checked;
-        });
+      walk_case(sc, span_log2, MipRule::segment, 7, [&](std::int32_t row, std::int32_t column, std::int32_t count, const PixelRun<0>& r) {
+        REQUIRE(r.level.one_level);  // bilinear within the run
+        REQUIRE((r.level.level >= 0 && r.level.level <= 6));
+        if (span_log2 != 0) return;
+        REQUIRE(count == 1);
+        ++pixels;
+        const double lambda = exact_lambda(t, sc.c, column + 0.5, row + 0.5);
+        if (!std::isfinite(lambda)) return;
+        const double exact = std::clamp(lambda, 0.0, 6.0);
+        if (std::abs(exact - std::floor(exact) - 0.5) < near_half) return;
+        CHECK(r.level.level == static_cast<int>(std::lround(exact)));
+        ++checked;
       });
     }
   }

@@ -278,11 +278,11 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
   }
 
   // lambda along the span, linear on pieces (3_span/lod.hpp); the first is planned at c0.
-  // With MipRule::segment, lod.end is where the uv segment whose level is held ends.
+  // With MipRule::segment, one level is held until level_until, the end of its uv segment.
   LodPiece lod{c0, c0, 0, 0, 0};
-  const bool level_per_segment = control.mip == MipRule::segment;
+  std::int32_t level_until = c0;
   if constexpr (UV && Lod) {
-    if (control.lod != nullptr && !level_per_segment) lod.end_value = lod_q16_at(*control.lod, t, c0);
+    if (control.lod != nullptr && control.mip == MipRule::trilinear) lod.end_value = lod_q16_at(*control.lod, t, c0);
   }
 
   std::int32_t column = c0;
@@ -311,10 +311,10 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
     }
     std::int32_t count = run_end - column;
     if constexpr (UV && Lod) {
-      if (control.lod != nullptr && level_per_segment) {
-        if (column == lod.end) {  // a new uv segment: runs never pass its end
-          lod.end = uv.segment_end < c1 + 1 ? uv.segment_end : c1 + 1;
-          run.level = segment_level(*control.lod, t, column, lod.end - 1);
+      if (control.lod != nullptr && control.mip == MipRule::segment) {
+        if (column == level_until) {  // a new uv segment: runs never pass its end
+          level_until = uv.segment_end < c1 + 1 ? uv.segment_end : c1 + 1;
+          run.level = segment_level(*control.lod, t, column, level_until - 1);
         }
       } else if (control.lod != nullptr) {
         if (column == lod.end) lod = plan_lod_piece(*control.lod, t, column, lod.end_value, c1);  // runs never pass a piece's end

@@ -60,6 +60,17 @@ inline constexpr bool has_long_multiply = true;
   else return mul_s32_u32_halves(a, b);
 }
 
+// The same product for code that runs per triangle or per vertex, not per
+// pixel: on ARMv6-M one out-of-line copy of the four-product routine (a call
+// is cheaper than __muldi3 and the flash is paid once, not at every site).
+[[gnu::noinline]] constexpr std::int64_t mul_s32_halves_outlined(std::int32_t a, std::int32_t b) {
+  return mul_s32_halves(a, b);
+}
+[[gnu::always_inline]] constexpr std::int64_t mul_s32_setup(std::int32_t a, std::int32_t b) {
+  if constexpr (has_long_multiply) return std::int64_t{a} * b;
+  else return mul_s32_halves_outlined(a, b);
+}
+
 // a * b for b < 2^16: two 16x16 products on ARMv6-M instead of four.
 [[gnu::always_inline]] constexpr std::uint64_t mul_u32_u16(std::uint32_t a, std::uint32_t b) {
   if constexpr (has_long_multiply) return std::uint64_t{a} * b;

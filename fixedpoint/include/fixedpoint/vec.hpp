@@ -12,6 +12,7 @@
 
 #include <cstdint>
 
+#include "fixedpoint/bits.hpp"
 #include "fixedpoint/q.hpp"
 
 namespace fixedpoint {
@@ -67,8 +68,9 @@ constexpr std::int64_t to_q32(std::int64_t x, int from_frac) {
 constexpr std::int64_t transform_row(const Mat4Block& a, int row, const Vec3Q16& v) {
   const std::int32_t* col = a.m;
   // Exact: |sum| <= max_row_sum < 2^62 (see above). Translation: w = 1.0 = 2^16 in Q16.
-  const std::int64_t sum = std::int64_t{col[0 + row]} * v.x + std::int64_t{col[4 + row]} * v.y +
-                           std::int64_t{col[8 + row]} * v.z + std::int64_t{col[12 + row]} * 65536;
+  // mul_s32_setup: the exact product without libgcc's __muldi3 on ARMv6-M.
+  const std::int64_t sum = mul_s32_setup(col[0 + row], v.x) + mul_s32_setup(col[4 + row], v.y) + mul_s32_setup(col[8 + row], v.z) +
+                           std::int64_t{col[12 + row]} * 65536;
   return to_q32(sum, a.frac_bits + 16);  // the sum is in Q(frac_bits + 16)
 }
 

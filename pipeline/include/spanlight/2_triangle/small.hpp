@@ -94,8 +94,11 @@ struct SmallTriangle {
   // the box by at most (|da1| + |da2|) 130 * 2^-27.
   constexpr AffineAttribute affine(std::int32_t a0, std::int32_t da1, std::int32_t da2, int shift) const {
     const int down = barycentric_bits - shift;
+    // The low word of the sum >> down (down <= 26): what the cast keeps. mul_s32_setup and the
+    // word shift keep __muldi3 and __aeabi_lasr out of M0+ setup.
     auto mix = [&](std::int32_t p1, std::int32_t p2) {
-      return static_cast<std::uint32_t>((std::int64_t{da1} * p1 + std::int64_t{da2} * p2) >> down);
+      const std::int64_t sum = fixedpoint::mul_s32_setup(da1, p1) + fixedpoint::mul_s32_setup(da2, p2);
+      return fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(sum), down);
     };
     return {(static_cast<std::uint32_t>(a0) << shift) + mix(l1.at_corner, l2.at_corner), mix(l1.per_column, l2.per_column),
             mix(l1.per_row, l2.per_row)};
@@ -160,9 +163,11 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   t.left[0] = t.left[1] = t.right[0] = t.right[1] = t.level = 3;
   for (std::uint8_t i = 0; i < 3; ++i) {
     const SmallEdge& e = t.edge[i];
-    const std::int32_t e00 = e.row_value, across = e.slope * columns, down = e.row_step * rows;
-    for (const std::int32_t corner : {e00, e00 + across, e00 + down, e00 + across + down})
-      if (corner > limit || corner < -limit) return false;
+    const std::int32_t across = e.slope * columns, down = e.row_step * rows;
+    // The four corners' least and greatest values (|.| < 2^30 + 2 * 2^28.1 < 2^31).
+    const std::int32_t lowest = e.row_value + (across < 0 ? across : 0) + (down < 0 ? down : 0);
+    const std::int32_t highest = e.row_value + (across > 0 ? across : 0) + (down > 0 ? down : 0);
+    if (highest > limit || lowest < -limit) return false;
     if (e.slope > 0) t.left[lefts++] = i;
     else if (e.slope < 0) t.right[rights++] = i;
     else t.level = i;
@@ -253,14 +258,16 @@ struct QuadraticAttribute {
                er = static_cast<std::int32_t>(e.per_row);
     const int down = 30 - to_step;  // to_step <= 24
     auto up = [&](std::uint32_t x) { return x << to_step; };
-    auto product = [&](std::int64_t p) { return static_cast<std::uint32_t>(p >> down); };  // (x e) in the step scale
+    // (x e) in the step scale: the low word of the product >> down, 6 <= down <= 30.
+    auto product = [&](std::int64_t p) { return fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(p), down); };
+    constexpr auto mul = fixedpoint::mul_s32_setup;  // exact 32 x 32 products; no __muldi3 on M0+
     QuadraticAttribute q{};
-    q.q00 = base + up(a.at_corner + b.at_corner) - product(std::int64_t{A0} * e0);
-    q.q10 = up(a.per_column + b.per_column) - product(std::int64_t{Ac} * e0 + std::int64_t{A0} * ec);
-    q.q01 = up(a.per_row + b.per_row) - product(std::int64_t{Ar} * e0 + std::int64_t{A0} * er);
-    q.q20 = 0u - product(std::int64_t{Ac} * ec);
-    q.q11 = 0u - product(std::int64_t{Ac} * er + std::int64_t{Ar} * ec);
-    q.q02 = 0u - product(std::int64_t{Ar} * er);
+    q.q00 = base + up(a.at_corner + b.at_corner) - product(mul(A0, e0));
+    q.q10 = up(a.per_column + b.per_column) - product(mul(Ac, e0) + mul(A0, ec));
+    q.q01 = up(a.per_row + b.per_row) - product(mul(Ar, e0) + mul(A0, er));
+    q.q20 = 0u - product(mul(Ac, ec));
+    q.q11 = 0u - product(mul(Ac, er) + mul(Ar, ec));
+    q.q02 = 0u - product(mul(Ar, er));
     return q;
   }
 };

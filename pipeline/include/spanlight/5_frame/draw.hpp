@@ -87,18 +87,23 @@ constexpr std::int32_t uv_range(const ObjectData& object, const std::uint32_t (&
 inline constexpr std::uint32_t small_depth_margin = 256;
 
 // Draws a small triangle (2_triangle/small.hpp): rows by its 32-bit edges, and
-// each span as one run with affine depth and quadratic uv.
+// each span as one run with affine depth and quadratic uv. Its edges step down
+// the rows in place. `run` is the object's: zeroed once, and per triangle only
+// depth and (when the pass needs them) uv are set, all the small path's kernels
+// read (it serves no pass that reads a projector).
 template <int P, typename Kernel, typename Hooks>
-inline void draw_small(const SmallTriangle& t, const ObjectData& object, const std::uint32_t (&index)[3],
+inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::uint32_t (&index)[3],
                        const ScreenVertex (&v)[3], const PerspectiveWeights& weights, std::int32_t range,
-                       const SpanNeeds& needs, const PassView& view, Kernel& kernel, Hooks& hooks) {
+                       const SpanNeeds& needs, const PassView& view, PixelRun<P>& run, Kernel& kernel, Hooks& hooks) {
   const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
   const AffineAttribute z = t.affine(v[i0].z, v[i1].z - v[i0].z, v[i2].z - v[i0].z, 2);  // Q1.30 -> Q0.32
   // The rows of the band the triangle covers.
   const std::int32_t first = t.row_begin > view.row_begin ? t.row_begin : view.row_begin;
   const std::int32_t last = t.row_end < view.row_end ? t.row_end : view.row_end;
-  QuadraticRows uv[2]{};
-  if (needs.uv) {
+  QuadraticRows uv[2];
+  if (!needs.uv) {
+    uv[0] = uv[1] = QuadraticRows{};  // never read; set so that no path leaves them undefined
+  } else {
     const AffineAttribute e = t.affine(weights.e[i0], weights.e[i1] - weights.e[i0], weights.e[i2] - weights.e[i0], 0);
     const auto r0 = static_cast<std::uint32_t>(first - t.row0);
     // |A|, |B| <= 24 D 2^extra < 2^31 over the box (its barycentrics are within [-12, 12]).
@@ -109,7 +114,7 @@ inline void draw_small(const SmallTriangle& t, const ObjectData& object, const s
       auto at = [&](int k) { return object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)]; };
       const std::int32_t d1 = at(i1) - at(i0), d2 = at(i2) - at(i0);
       auto b = [&](std::int32_t d, int k) {  // (u_k - u_0) e_k in exact units * 2^extra
-        return static_cast<std::int32_t>((std::int64_t{d} * weights.e[k]) >> (30 - extra));
+        return static_cast<std::int32_t>(fixedpoint::mul_s32_setup(d, weights.e[k]) >> (30 - extra));
       };
       const std::uint32_t base = static_cast<std::uint32_t>(at(i0) + needs.uv_scale.offset[c]) << shift;
       uv[c].start(QuadraticAttribute::of(base, t.affine(0, d1, d2, extra), t.affine(0, b(d1, i1), b(d2, i2), 0), e,
@@ -118,14 +123,12 @@ inline void draw_small(const SmallTriangle& t, const ObjectData& object, const s
     }
   }
   hooks.triangle_rows();
-  SmallTriangle rows = t;  // its edges step down the rows
-  for (std::int32_t row = t.row_begin; row < first; ++row) rows.next_row();  // fewer than 64 rows
-  PixelRun<P> run{};  // only what the pass reads is set: depth, and uv when it needs them (no projector here)
+  for (std::int32_t row = t.row_begin; row < first; ++row) t.next_row();  // fewer than 64 rows
   run.dz = static_cast<std::int32_t>(z.per_column);
   std::uint32_t z_row = z.at_corner + z.per_row * static_cast<std::uint32_t>(first - t.row0);
   for (std::int32_t row = first; row < last; ++row) {
     std::int32_t lo = -t.column0, hi = view.width - 1 - t.column0;  // columns of the view, relative to the corner
-    if (rows.columns(lo, hi)) {
+    if (t.columns(lo, hi)) {
       const auto c = static_cast<std::uint32_t>(lo);
       run.z = z_row + z.per_column * c;
       if (needs.uv) {
@@ -134,7 +137,7 @@ inline void draw_small(const SmallTriangle& t, const ObjectData& object, const s
       }
       kernel.run(static_cast<std::uint32_t>((row - view.row_begin) * view.width + t.column0 + lo), hi - lo + 1, run);
     }
-    rows.next_row();
+    t.next_row();
     z_row += z.per_row;
     if (needs.uv) {
       uv[0].next_row();
@@ -179,6 +182,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     const Mat4Block* to_projector = matrices.projector_from_object + o * pc;
     if (object.vertex_count > 8 && object_beyond_a_plane(object.bounds, to_clip, guard)) continue;
     const bool small_allowed = small_path_allowed(scene, object, view);
+    PixelRun<P> small_run{};  // draw_small's, zeroed once an object
     cache_vertices(object, to_clip, view.width, view.height, guard, cache);
 
     // Stages 2 and 3 for one triangle whose window vertices are known (cached, or cut by the clip stage).
@@ -264,7 +268,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
                                (range < (1 << 26) && perspective_weights_of(corners, weights) &&
                                 quadratic_enough(weights, range, object.uv_frac_bits, knobs.tolerance_log2));
             if (depth_ok && uv_ok) {
-              draw_small<P>(t, object, index, corners, weights, range, needs, view, kernel, hooks);
+              draw_small<P>(t, object, index, corners, weights, range, needs, view, small_run, kernel, hooks);
               continue;
             }
           }

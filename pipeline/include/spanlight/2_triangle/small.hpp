@@ -31,6 +31,23 @@ namespace spanlight {
 
 inline constexpr std::int32_t small_triangle_extent = 1 << 14;  // subpixels: 64 pixels
 
+// Where a sloped edge bounds a row, stepped down the rows: floor((E_row - bias) / |slope|)
+// as quotient and remainder (the row's last column inside a right edge, minus the first
+// inside a left one). An unused bound never binds: quotient 2^30, no step.
+struct EdgeBound {
+  std::int32_t quotient, remainder, quotient_step, remainder_step, divisor;
+
+  static constexpr EdgeBound none() { return {1 << 30, 0, 0, 0, 1}; }
+  constexpr void next_row() {
+    quotient += quotient_step;
+    remainder += remainder_step;
+    if (remainder >= divisor) {
+      remainder -= divisor;
+      ++quotient;
+    }
+  }
+};
+
 // One edge over the rows of a small triangle: E(c) = slope c + row_value >= bias.
 struct SmallEdge {
   std::int32_t slope, row_value, row_step, bias;
@@ -54,16 +71,7 @@ struct SmallEdge {
     quotient_step = s.quotient;
     remainder_step = s.remainder;
   }
-  constexpr void next_row() {
-    row_value += row_step;
-    if (divisor == 0) return;
-    quotient += quotient_step;
-    remainder += remainder_step;
-    if (remainder >= divisor) {
-      remainder -= divisor;
-      ++quotient;
-    }
-  }
+  constexpr EdgeBound bound() const { return {quotient, remainder, quotient_step, remainder_step, divisor}; }
 };
 
 // An attribute affine over the box: value at the corner and per column and row,
@@ -83,9 +91,7 @@ struct BarycentricPlane {
 struct SmallTriangle {
   std::int32_t column0, row0;        // the box's corner (pixel column and row)
   std::int32_t row_begin, row_end;   // rows to walk, absolute
-  SmallEdge edge[3];
-  std::uint8_t left[2], right[2];    // which edges bound a row from the left, from the right (3: none)
-  std::uint8_t level;                // the horizontal edge (3: none)
+  EdgeBound left[2], right[2];       // the sloped edges bounding a row from the left, from the right
   BarycentricPlane l1, l2;           // of the vertices in setup slots 1 and 2
   std::uint8_t order[3];
 
@@ -105,15 +111,15 @@ struct SmallTriangle {
   }
 
   // The columns of the row the edges stand at, relative to the corner: [lo, hi], empty if lo > hi.
+  // (A horizontal edge has trimmed row_begin and row_end instead.)
   constexpr bool columns(std::int32_t& lo, std::int32_t& hi) const {
-    for (const std::uint8_t i : left)
-      if (i < 3 && -edge[i].quotient > lo) lo = -edge[i].quotient;
-    for (const std::uint8_t i : right)
-      if (i < 3 && edge[i].quotient < hi) hi = edge[i].quotient;
-    return (level == 3 || edge[level].row_value >= edge[level].bias) && lo <= hi;
+    for (const EdgeBound& e : left) lo = -e.quotient > lo ? -e.quotient : lo;
+    for (const EdgeBound& e : right) hi = e.quotient < hi ? e.quotient : hi;
+    return lo <= hi;
   }
   constexpr void next_row() {
-    for (SmallEdge& e : edge) e.next_row();
+    for (EdgeBound& e : left) e.next_row();
+    for (EdgeBound& e : right) e.next_row();
   }
 };
 
@@ -147,30 +153,29 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   if (r0 < 0) r0 = 0;
   if (r1 > height) r1 = height;
   if (r0 >= r1) return true;
-  t.row_begin = r0;
-  t.row_end = r1;
   // Edge i runs from slot i + 1 to slot i + 2, as in setup_triangle.
-  t.edge[0].start(x1, y1, x2, y2);
-  t.edge[1].start(x2, y2, x0, y0);
-  t.edge[2].start(x0, y0, x1, y1);
+  SmallEdge edge[3];
+  edge[0].start(x1, y1, x2, y2);
+  edge[1].start(x2, y2, x0, y0);
+  edge[2].start(x0, y0, x1, y1);
   // Slivers go the general way: over the box every barycentric must stay within
   // [-12, 12] (|E_i| <= 12 D at its four corners: E is affine), so that the
   // planes and the attributes relative to vertex 0 fit 32 bits. In 32 bits:
   // |E| < 2^30 at the corner, |slope| columns and |row_step| rows < 2^28.1 each.
   const std::int32_t columns = ((x_max - ox) >> 8) + 1, rows = ((y_max - oy) >> 8) + 1;
   const std::int32_t limit = area2 < (INT32_MAX / 12) ? 12 * area2 : INT32_MAX;
-  int lefts = 0, rights = 0;
-  t.left[0] = t.left[1] = t.right[0] = t.right[1] = t.level = 3;
-  for (std::uint8_t i = 0; i < 3; ++i) {
-    const SmallEdge& e = t.edge[i];
+  int lefts = 0, rights = 0, level = 3;  // at most two edges each side: the three dy sum to 0
+  t.left[0] = t.left[1] = t.right[0] = t.right[1] = EdgeBound::none();
+  for (int i = 0; i < 3; ++i) {
+    const SmallEdge& e = edge[i];
     const std::int32_t across = e.slope * columns, down = e.row_step * rows;
     // The four corners' least and greatest values (|.| < 2^30 + 2 * 2^28.1 < 2^31).
     const std::int32_t lowest = e.row_value + (across < 0 ? across : 0) + (down < 0 ? down : 0);
     const std::int32_t highest = e.row_value + (across > 0 ? across : 0) + (down > 0 ? down : 0);
     if (highest > limit || lowest < -limit) return false;
-    if (e.slope > 0) t.left[lefts++] = i;
-    else if (e.slope < 0) t.right[rights++] = i;
-    else t.level = i;
+    if (e.slope > 0) t.left[lefts++] = e.bound();
+    else if (e.slope < 0) t.right[rights++] = e.bound();
+    else level = i;
   }
   // The barycentrics' planes: E_i / D, times 2^26. rcp ~ 2^(30 + L) / D (L the bit length of D),
   // so x / D 2^26 = x rcp / 2^(4 + L); |x| < 2^30 and rcp <= 2^31: the product fits 64 bits.
@@ -183,8 +188,19 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
     };
     return BarycentricPlane{scaled(e.row_value), scaled(e.slope), scaled(e.row_step)};
   };
-  t.l1 = plane(t.edge[1]);
-  t.l2 = plane(t.edge[2]);
+  t.l1 = plane(edge[1]);
+  t.l2 = plane(edge[2]);
+  // A horizontal edge's E is the same all along a row, so it takes or leaves whole rows:
+  // those at the end where it lies. E at row R: row_value + (R - row0) row_step, |.| < 2^29 + 2^28.1.
+  if (level < 3) {
+    const SmallEdge& e = edge[level];
+    auto inside = [&](std::int32_t row) { return e.row_value + (row - t.row0) * e.row_step >= e.bias; };
+    while (r0 < r1 && !inside(r0)) ++r0;
+    while (r1 > r0 && !inside(r1 - 1)) --r1;
+    if (r0 >= r1) return true;
+  }
+  t.row_begin = r0;
+  t.row_end = r1;
   // Walk the edges down to the first row (at most one row but at the frame's top).
   for (std::int32_t r = t.row0; r < r0; ++r) t.next_row();
   covers = true;

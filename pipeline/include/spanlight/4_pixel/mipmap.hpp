@@ -44,11 +44,12 @@ constexpr MipLevel mip_level(const TextureData& texture, const TexelGrid& g0, in
   return m;
 }
 
-// A repeating level's sums. A side of one texel (shift 32) reads texel 0 and its
-// frame copy: the texel index is taken in two shifts, each below 32.
+// A repeating level's sums. The top shift - 8 bits hold the texel index and the
+// 8-bit weight: one shift below 32 (shift <= 32), and a side of one texel (shift
+// 32) reads texel 0 and its frame copy.
 [[gnu::always_inline]] inline BilinearSums repeat_level_sums(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
-  const std::uint32_t x0 = (x >> (g.x_shift - 1)) >> 1, y0 = (y >> (g.y_shift - 1)) >> 1;
-  const std::uint32_t fx = (x >> (g.x_shift - 8)) & 255u, fy = (y >> (g.y_shift - 8)) & 255u;
+  const std::uint32_t xt = x >> (g.x_shift - 8), yt = y >> (g.y_shift - 8);
+  const std::uint32_t x0 = xt >> 8, y0 = yt >> 8, fx = xt & 255u, fy = yt & 255u;
   return footprint_sums({g.texels + static_cast<std::int32_t>(y0) * g.stride + static_cast<std::int32_t>(x0), fx, fy}, g.stride);
 }
 

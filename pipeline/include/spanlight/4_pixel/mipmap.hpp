@@ -24,6 +24,7 @@ namespace spanlight {
 struct MipLevel {
   TexelGrid grid;       // repeat: x_shift, y_shift of this level (up to 32); else frac = uv_frac_bits + k
   std::uint32_t back_x, back_y;  // subtracted from the walk's coordinates
+  int x_down, y_down;            // repeat: x_shift - 8, y_shift - 8 (the index and weight bits' place)
 };
 
 // Level k of a texture whose level-0 grid (with the object's uv_frac_bits) is `g0`.
@@ -37,6 +38,8 @@ constexpr MipLevel mip_level(const TextureData& texture, const TexelGrid& g0, in
     m.grid = {level.texels, level.stride, level.width, level.height, g0.frac, x_shift, y_shift};
     m.back_x = extra << (g0.x_shift - 1);
     m.back_y = extra << (g0.y_shift - 1);
+    m.x_down = x_shift - 8;
+    m.y_down = y_shift - 8;
   } else {
     m.grid = texel_grid(level, g0.frac + k);
     m.back_x = m.back_y = extra << (g0.frac - 1);
@@ -47,8 +50,9 @@ constexpr MipLevel mip_level(const TextureData& texture, const TexelGrid& g0, in
 // A repeating level's sums. The top shift - 8 bits hold the texel index and the
 // 8-bit weight: one shift below 32 (shift <= 32), and a side of one texel (shift
 // 32) reads texel 0 and its frame copy.
-[[gnu::always_inline]] inline BilinearSums repeat_level_sums(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
-  const std::uint32_t xt = x >> (g.x_shift - 8), yt = y >> (g.y_shift - 8);
+[[gnu::always_inline]] inline BilinearSums repeat_level_sums(const MipLevel& m, std::uint32_t x, std::uint32_t y) {
+  const TexelGrid& g = m.grid;
+  const std::uint32_t xt = x >> m.x_down, yt = y >> m.y_down;
   const std::uint32_t x0 = xt >> 8, y0 = yt >> 8, fx = xt & 255u, fy = yt & 255u;
   return footprint_sums({g.texels + static_cast<std::int32_t>(y0) * g.stride + static_cast<std::int32_t>(x0), fx, fy}, g.stride);
 }
@@ -57,7 +61,7 @@ template <Wrap W>
 [[gnu::always_inline]] inline BilinearSums level_sums(const MipLevel& m, std::uint32_t x, std::uint32_t y) {
   x -= m.back_x;
   y -= m.back_y;
-  if constexpr (W == Wrap::repeat) return repeat_level_sums(m.grid, x, y);
+  if constexpr (W == Wrap::repeat) return repeat_level_sums(m, x, y);
   else if constexpr (W == Wrap::clamp) return bilinear_clamp_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
   else return bilinear_border_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
 }

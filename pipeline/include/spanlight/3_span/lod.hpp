@@ -15,9 +15,11 @@
 // affine in the column: per evaluation, a few products and two logarithms
 // (d/dx's length is taken once a row).
 //
-// Along a row lambda is taken linear on pieces of 2^m pixels (LodPiece): its
-// value at the piece's ends, the piece halved until lambda at its middle and
-// quarters lies within lod_chord_tolerance of the chord. Where lambda keeps the sign of
+// Along a row lambda is taken linear on pieces of up to 128 pixels (LodPiece),
+// each ending at a pixel centre of the span (a span is one piece where lambda
+// allows): its value at the piece's ends, the piece halved until lambda at its
+// middle and quarters (exact points, in subpixels) lies within
+// lod_chord_tolerance of the chord. Where lambda keeps the sign of
 // its curvature on a piece, the chord's distance to it is at most twice its
 // distance at the middle (a concave function zero at both ends is at most
 // twice its middle value anywhere between). With e = 2^-10.4 the error of one
@@ -34,6 +36,7 @@
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
+#include "fixedpoint/divide.hpp"
 #include "spanlight/1_vertex/project.hpp"
 #include "spanlight/2_triangle/attributes.hpp"
 #include "spanlight/2_triangle/setup.hpp"
@@ -133,14 +136,15 @@ constexpr void set_lod_row(LodPlanes& p, std::int32_t row) {
 // counted half) and the halving: |error| < 3.5 * 2^-12.3 + 2^-17 < 2^-10.4
 // against the exact lambda at that pixel centre.
 inline constexpr std::int32_t lod_q16_zero = -(std::int32_t{256} << 16);  // rho = 0: magnified without end
-constexpr std::int32_t lod_q16_at(const LodPlanes& p, const TriangleSetup& t, std::int32_t column) {
+// x_s: the point's x in subpixels on the current row (a pixel centre, or between two
+// of a span's: E_i is exact there, slope / 256 per subpixel).
+constexpr std::int32_t lod_q16_at_x(const LodPlanes& p, const TriangleSetup& t, std::int32_t x_s) {
   std::uint64_t h = 0;
   for (int i = 0; i < 3; ++i) {
-    const std::int64_t e = t.edge[i].value_at(column);
+    const std::int64_t e = t.edge[i].row_value + fixedpoint::mul_s32(static_cast<std::int32_t>(t.edge[i].slope >> 8), x_s - 128);
     if (e > 0) h += fixedpoint::mul_u32(static_cast<std::uint32_t>(e >> p.e_shift), t.omega[i]);
   }
   if (h == 0) return lod_q16_zero;
-  const std::int64_t x_s = std::int64_t{column} * 256 + 128;
   // d/dy's numerator has the opposite sign (x_m - x): lengths do not see it.
   const std::int64_t yu = p.b[0] * x_s + p.ay[0], yv = p.b[1] * x_s + p.ay[1];
   const bool flat_y = yu == 0 && yv == 0;
@@ -153,45 +157,56 @@ constexpr std::int32_t lod_q16_at(const LodPlanes& p, const TriangleSetup& t, st
   return lambda < lod_q16_zero ? lod_q16_zero : (lambda > -lod_q16_zero ? -lod_q16_zero : lambda);
 }
 
+// At the centre of a column.
+constexpr std::int32_t lod_q16_at(const LodPlanes& p, const TriangleSetup& t, std::int32_t column) {
+  return lod_q16_at_x(p, t, column * 256 + 128);
+}
+
 // lambda along a row from `begin`, linear up to (not including) `end`: value at
 // begin and step per pixel, Q.16; `end_value` is lambda at `end` when end is in the span.
 inline constexpr std::int32_t lod_chord_tolerance = 1 << (16 - 6);  // 1/64
-inline constexpr int lod_piece_log2 = 7;                            // 128 pixels: the step's rounding adds < 2^-10
+inline constexpr std::int32_t lod_piece_pixels = 128;              // the step's rounding adds < 2^-10
 struct LodPiece {
   std::int32_t begin, end;
   std::int32_t value, step, end_value;
 };
 
-// The piece from `column` (lambda there: `value`) within a span whose last pixel is `last`.
+// The piece from `column` (lambda there: `value`) within a span whose last pixel is
+// `last`: n = min(2^7, last - column) pixels, its end (the next piece's start) inside
+// the span, halved while lambda at its middle or quarters (in subpixels: exact points)
+// strays from the chord. The step is the chord's slope rounded, by one division.
 constexpr LodPiece plan_lod_piece(const LodPlanes& p, const TriangleSetup& t, std::int32_t column, std::int32_t value,
                                   std::int32_t last) {
   if (column >= last) return {column, column + 1, value, 0, value};
-  int m = fixedpoint::bit_length(static_cast<std::uint32_t>(last - column)) - 1;  // 2^m <= last - column
-  m = m > lod_piece_log2 ? lod_piece_log2 : m;
-  std::int32_t end_value = lod_q16_at(p, t, column + (std::int32_t{1} << m));
+  std::int32_t n = last - column < lod_piece_pixels ? last - column : lod_piece_pixels;
+  std::int32_t end_value = lod_q16_at(p, t, column + n);
   auto near = [](std::int32_t lambda, std::int32_t chord) {
     return lambda - chord <= lod_chord_tolerance && chord - lambda <= lod_chord_tolerance;
   };
-  while (m > 1) {
+  const std::int32_t x0 = column * 256 + 128;  // the piece's first pixel centre, subpixels
+  while (n > 2) {
     // The middle and the quarters: lambda's curvature changes sign where the larger
     // derivative changes (a corner) and within the d/dy term (an inflection).
     // Both ends within [-2^24, 2^24]: their sums and differences fit 32 bits.
-    const std::int32_t middle = lod_q16_at(p, t, column + (std::int32_t{1} << (m - 1)));
+    const std::int32_t middle = lod_q16_at_x(p, t, x0 + n * 128);
     const std::int32_t quarter = (end_value - value) >> 2;
     const bool linear = near(middle, value + ((end_value - value) >> 1)) &&
-                        near(lod_q16_at(p, t, column + (std::int32_t{1} << (m - 2))), value + quarter) &&
-                        near(lod_q16_at(p, t, column + 3 * (std::int32_t{1} << (m - 2))), end_value - quarter);
+                        near(lod_q16_at_x(p, t, x0 + n * 64), value + quarter) &&
+                        near(lod_q16_at_x(p, t, x0 + n * 192), end_value - quarter);
     if (linear) break;
-    end_value = middle;
-    --m;
+    // Halved: its end is the middle when that is a pixel centre.
+    end_value = (n & 1) == 0 ? middle : lod_q16_at(p, t, column + (n >> 1));
+    n >>= 1;
   }
-  if (m == 1) {  // two pixels, both exact when the piece ends at its second
+  if (n == 2) {  // two pixels, both exact when the piece ends at its second
     end_value = lod_q16_at(p, t, column + 1);
-    m = 0;
+    n = 1;
   }
-  // The step rounded: after up to 2^7 pixels the sum strays by at most 2^6 * 2^-16 = 2^-10.
-  const std::int32_t step = (end_value - value + ((std::int32_t{1} << m) >> 1)) >> m;
-  return {column, column + (std::int32_t{1} << m), value, step, end_value};
+  // The step rounded (floor((d + n/2) / n)): after up to 2^7 pixels the sum strays by
+  // at most 2^6 * 2^-16 = 2^-10. |d| <= 2^25: the sum fits 32 bits.
+  const std::int32_t step =
+      n == 1 ? end_value - value : fixedpoint::FloorDivisor(static_cast<std::uint32_t>(n)).floor_div(end_value - value + (n >> 1)).quotient;
+  return {column, column + n, value, step, end_value};
 }
 
 // A run's level and mix. With d = lambda rounded to Q.8: below 0 the run reads

@@ -75,7 +75,7 @@ struct LodPlanes {
   // Numerators (times 2^-shift): d/dx = b y_s + ax (per row), d/dy = b x_s + ay (per column),
   // [0] for u and [1] for v; x_s, y_s the pixel centre in subpixels.
   std::int64_t b[2], ax[2], ay[2];
-  int e_shift;               // H sums E_i >> e_shift (E_i < 2^31 then)
+  int e_shift;               // H sums E_i >> e_shift (E_i < 2^31 then); below 13 (2A < 2^43)
   std::int32_t constant_q16; // twice the log of the constant factors (below), Q.16
   std::int32_t row_y;        // the current row's centre in subpixels (set_lod_row)
   std::int32_t along_x_q16;  // log2 of d/dx's squared length on that row (constant along it); INT32_MIN: zero
@@ -142,7 +142,7 @@ constexpr std::int32_t lod_q16_at_x(const LodPlanes& p, const TriangleSetup& t, 
   std::uint64_t h = 0;
   for (int i = 0; i < 3; ++i) {
     const std::int64_t e = t.edge[i].row_value + fixedpoint::mul_s32(static_cast<std::int32_t>(t.edge[i].slope >> 8), x_s - 128);
-    if (e > 0) h += fixedpoint::mul_u32(static_cast<std::uint32_t>(e >> p.e_shift), t.omega[i]);
+    if (e > 0) h += fixedpoint::mul_u32(fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(e), p.e_shift), t.omega[i]);
   }
   if (h == 0) return lod_q16_zero;
   // d/dy's numerator has the opposite sign (x_m - x): lengths do not see it.

@@ -54,8 +54,10 @@ inline constexpr std::uint32_t log2_q16_table[33] = {
 // |error| < 2^-12.3.
 constexpr std::int32_t log2_q16(std::uint64_t x) {
   const int e = fixedpoint::bit_length(x) - 1;
-  const std::uint64_t m = e >= 32 ? x >> (e - 32) : x << (32 - e);  // in [2^32, 2^33)
-  const auto below = static_cast<std::uint32_t>(m);                // the bits after the leading one
+  // The 32 bits after the leading one (x normalised to [2^32, 2^33), its low word), by
+  // 32-bit shifts: (lo << 1) << (31 - e) is lo << (32 - e) without UB at e = 0.
+  const std::uint32_t below = e >= 32 ? fixedpoint::low_word_shifted_right(x, e - 32)
+                                      : (static_cast<std::uint32_t>(x) << 1) << (31 - e);
   const std::uint32_t i = below >> 27, within = (below >> 11) & 0xFFFFu;
   const std::uint32_t lo = log2_q16_table[i], hi = log2_q16_table[i + 1];
   return e * 65536 + static_cast<std::int32_t>(lo + (((hi - lo) * within) >> 16));  // (hi - lo) < 2^12

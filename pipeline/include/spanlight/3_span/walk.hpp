@@ -1,8 +1,9 @@
 // Stage 3c, spans: walk a row's covered columns c0..c1. Each group (the surface
 // uv, each projector) is evaluated exactly (exact.hpp) at the span's two ends,
 // and in between at the ends and middles of segments 2^k pixels long, k chosen
-// per segment from the closed-form bound of segments.hpp; there from the 1-D
-// perspective interpolation of the span's ends (RowInterpolation, one
+// per segment from the closed-form bound of segments.hpp (the last one of a span
+// may start before the current pixel and end at the span's end); there from the
+// 1-D perspective interpolation of the span's ends (RowInterpolation, one
 // reciprocal). Within a segment values step as the quadratic through those
 // three points: two adds a pixel. A projector whose q changes sign inside the
 // span is evaluated at every pixel; one that is behind (q <= 0) or outside its
@@ -169,7 +170,7 @@ struct GroupSpan {
       return;
     }
     mode = GroupMode::interpolated;
-    row.init(c0, c1, first, last);
+    row.init(c0, c1, first, last, components);
     planner.start(c0, c1, row.e_a, row.e_b, texel_delta8(first, last, group, c), scale.texel_bits, c.tolerance_log2,
                   c.span_log2);
     take(first);
@@ -230,25 +231,55 @@ struct GroupSpan {
   }
 
   // The segment from `column` (its values taken) to the next exact point: the
-  // planned power of two, or the largest one that fits before the span's end.
+  // planned power of two; where less than that is left, one segment back from the
+  // span's end (plan_tail), else the largest power of two that fits before it.
   template <typename Divide>
   constexpr void plan(const Divide& divide, std::int32_t column, std::int32_t c1) {
     if (column >= c1) {  // the span's last pixel
       segment_end = c1 + 1;
       return;
     }
+    const std::int32_t left = c1 - column;
     int k = planner.length_log2_at(column);
-    while ((std::int32_t{1} << k) > c1 - column) --k;
+    if ((std::int32_t{1} << k) > left && plan_tail(divide, column, c1, fixedpoint::bit_length(static_cast<std::uint32_t>(left - 1))))
+      return;
+    while ((std::int32_t{1} << k) > left) --k;
     segment_end = column + (std::int32_t{1} << k);
     if (segment_end == c1) end = last;
     else row.at(segment_end, divide, end);
     if (k == 0) return;  // one pixel: nothing steps
     GroupPoint middle;
     row.at(column + (std::int32_t{1} << (k - 1)), divide, middle);
+    set_steps(exact_start, middle, end, k);
+  }
+
+  // The span's tail, `left` = c1 - column pixels fewer than the planned length, as one segment of
+  // 2^k >= left pixels that ends at c1 and starts 2^k - left pixels back (still in the span), when
+  // the bound allows 2^k there: two exact points (that start and the middle; the end is `last`) in
+  // place of cutting the tail into its binary digits, a segment each. The stepped values at
+  // `column` are the quadratic's there, within the same bound as any pixel of the segment.
+  template <typename Divide>
+  constexpr bool plan_tail(const Divide& divide, std::int32_t column, std::int32_t c1, int k) {
+    const std::int32_t start = c1 - (std::int32_t{1} << k);
+    if (start == column || start < planner.a || planner.length_log2_at(start) < k) return false;
+    GroupPoint first, middle;
+    row.at(start, divide, first);
+    row.at(start + (std::int32_t{1} << (k - 1)), divide, middle);
+    end = last;
+    segment_end = c1;
+    set_steps(first.value, middle, last, k);
+    const auto back = static_cast<std::uint32_t>(column - start);
     for (int c = 0; c < components; ++c) {
-      // Differences of the exact values (the start's is kept from `end` of the last plan, or the span's first point).
-      const QuadraticSteps q = quadratic_steps(middle.value[c] - exact_start[c], end.value[c] - middle.value[c], k,
-                                               scale.shift[c]);
+      value[c].value = scaled(first, c);
+      advance(value[c], back);  // exact modulo 2^32: what `back` rounds of the kernel's adds give
+    }
+    return true;
+  }
+
+  // The steps of the quadratic through the exact values at a segment's start, middle and end (k >= 1).
+  constexpr void set_steps(const std::int32_t (&start)[3], const GroupPoint& middle, const GroupPoint& stop, int k) {
+    for (int c = 0; c < components; ++c) {
+      const QuadraticSteps q = quadratic_steps(middle.value[c] - start[c], stop.value[c] - middle.value[c], k, scale.shift[c]);
       value[c].step = q.step;
       value[c].curve = q.curve;
     }

@@ -125,9 +125,12 @@ struct RowInterpolation {
   std::int32_t a, length;    // first column and b - a > 0
   std::uint32_t e_a, e_b;    // the divisors at a and b, scaled together below 2^31
   std::int32_t f_a[3], df[3];  // |f| < 2^30 at both ends, so |df| < 2^31
+  int components;              // 2 for uv, 3 for a projector: the values `at` fills
 
-  constexpr void init(std::int32_t column_a, std::int32_t column_b, const GroupPoint& pa, const GroupPoint& pb) {
+  constexpr void init(std::int32_t column_a, std::int32_t column_b, const GroupPoint& pa, const GroupPoint& pb,
+                      int count) {
     a = column_a;
+    components = count;
     length = column_b - column_a;
     const auto da = static_cast<std::uint64_t>(pa.denominator), db = static_cast<std::uint64_t>(pb.denominator);
     const int excess = fixedpoint::bit_length(da > db ? da : db) - 31;
@@ -150,7 +153,7 @@ struct RowInterpolation {
     out.denominator = static_cast<std::int64_t>(den);
     out.front = true;
     if (after == 0 || before == 0) {  // the ends themselves, exactly
-      for (int k = 0; k < 3; ++k) out.value[k] = after == 0 ? f_a[k] + df[k] : f_a[k];
+      for (int k = 0; k < components; ++k) out.value[k] = after == 0 ? f_a[k] + df[k] : f_a[k];
       return;
     }
     // Both cut to the 32 bits below den's leading one (den < 2^43, so n >= 21);
@@ -159,7 +162,7 @@ struct RowInterpolation {
     const std::uint32_t den_top = fixedpoint::high_word_shifted_left(den, n);
     const std::uint32_t num_top = fixedpoint::high_word_shifted_left(num, n);
     const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(num_top, divide.of_normalised(den_top)) >> 32);  // Q0.30
-    for (int k = 0; k < 3; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
+    for (int k = 0; k < components; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
   }
 };
 

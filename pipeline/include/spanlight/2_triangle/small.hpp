@@ -33,11 +33,10 @@ inline constexpr std::int32_t small_triangle_extent = 1 << 14;  // subpixels: 64
 
 // Where a sloped edge bounds a row, stepped down the rows: floor((E_row - bias) / |slope|)
 // as quotient and remainder (the row's last column inside a right edge, minus the first
-// inside a left one). An unused bound never binds: quotient 2^30, no step.
+// inside a left one).
 struct EdgeBound {
   std::int32_t quotient, remainder, quotient_step, remainder_step, divisor;
 
-  static constexpr EdgeBound none() { return {1 << 30, 0, 0, 0, 1}; }
   constexpr void next_row() {
     quotient += quotient_step;
     remainder += remainder_step;
@@ -51,27 +50,24 @@ struct EdgeBound {
 // One edge over the rows of a small triangle: E(c) = slope c + row_value >= bias.
 struct SmallEdge {
   std::int32_t slope, row_value, row_step, bias;
-  std::int32_t quotient, remainder, quotient_step, remainder_step, divisor;  // floor((row_value - bias) / |slope|)
+  std::int32_t top;  // the upper end's y, relative to the corner
 
   constexpr void start(std::int32_t ax, std::int32_t ay, std::int32_t bx, std::int32_t by) {
     const std::int32_t dx = bx - ax, dy = by - ay;
+    top = ay < by ? ay : by;
     bias = (dy < 0 || (dy == 0 && dx > 0)) ? 0 : 1;  // top-left rule, as Edge::start
     slope = -256 * dy;
     row_step = 256 * dx;
     row_value = dy * ax - dx * ay;  // E at the corner (column 0, row 0 of the box): |.| < 2^29
-    divisor = slope > 0 ? slope : -slope;
-    if (divisor == 0) {
-      quotient = remainder = quotient_step = remainder_step = 0;
-      return;
-    }
-    const fixedpoint::FloorDivisor d(static_cast<std::uint32_t>(divisor));
-    const auto q = d.floor_div(row_value - bias), s = d.floor_div(row_step);
-    quotient = q.quotient;
-    remainder = q.remainder;
-    quotient_step = s.quotient;
-    remainder_step = s.remainder;
   }
-  constexpr EdgeBound bound() const { return {quotient, remainder, quotient_step, remainder_step, divisor}; }
+  // Where it bounds row `down` of the box (0 <= down < 65: |E| there < 2^29 + 2^28.1), stepped
+  // from there: floor((E - bias) / |slope|) as quotient and remainder, one floor division each.
+  constexpr EdgeBound bound(std::int32_t down) const {
+    const std::int32_t divisor = slope > 0 ? slope : -slope;
+    const fixedpoint::FloorDivisor d(static_cast<std::uint32_t>(divisor));
+    const auto q = d.floor_div(row_value + down * row_step - bias), s = d.floor_div(row_step);
+    return {q.quotient, q.remainder, s.quotient, s.remainder, divisor};
+  }
 };
 
 // An attribute affine over the box: value at the corner and per column and row,
@@ -91,7 +87,10 @@ struct BarycentricPlane {
 struct SmallTriangle {
   std::int32_t column0, row0;        // the box's corner (pixel column and row)
   std::int32_t row_begin, row_end;   // rows to walk, absolute
-  EdgeBound left[2], right[2];       // the sloped edges bounding a row from the left, from the right
+  EdgeBound left, right;             // the sloped edges bounding the current row from the left, from the right
+  EdgeBound lower;                   // on the side with two edges, the one below the middle vertex:
+  std::int32_t rows_to_turn;         // it takes over after this many more rows (<= 0: no turn ahead)
+  bool lower_is_left;
   BarycentricPlane l1, l2;           // of the vertices in setup slots 1 and 2
   std::uint8_t order[3];
 
@@ -113,13 +112,14 @@ struct SmallTriangle {
   // The columns of the row the edges stand at, relative to the corner: [lo, hi], empty if lo > hi.
   // (A horizontal edge has trimmed row_begin and row_end instead.)
   constexpr bool columns(std::int32_t& lo, std::int32_t& hi) const {
-    for (const EdgeBound& e : left) lo = -e.quotient > lo ? -e.quotient : lo;
-    for (const EdgeBound& e : right) hi = e.quotient < hi ? e.quotient : hi;
+    lo = -left.quotient > lo ? -left.quotient : lo;
+    hi = right.quotient < hi ? right.quotient : hi;
     return lo <= hi;
   }
   constexpr void next_row() {
-    for (EdgeBound& e : left) e.next_row();
-    for (EdgeBound& e : right) e.next_row();
+    left.next_row();
+    right.next_row();
+    if (--rows_to_turn == 0) (lower_is_left ? left : right) = lower;
   }
 };
 
@@ -164,8 +164,7 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   // |E| < 2^30 at the corner, |slope| columns and |row_step| rows < 2^28.1 each.
   const std::int32_t columns = ((x_max - ox) >> 8) + 1, rows = ((y_max - oy) >> 8) + 1;
   const std::int32_t limit = area2 < (INT32_MAX / 12) ? 12 * area2 : INT32_MAX;
-  int lefts = 0, rights = 0, level = 3;  // at most two edges each side: the three dy sum to 0
-  t.left[0] = t.left[1] = t.right[0] = t.right[1] = EdgeBound::none();
+  int level = 3;
   for (int i = 0; i < 3; ++i) {
     const SmallEdge& e = edge[i];
     const std::int32_t across = e.slope * columns, down = e.row_step * rows;
@@ -173,9 +172,7 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
     const std::int32_t lowest = e.row_value + (across < 0 ? across : 0) + (down < 0 ? down : 0);
     const std::int32_t highest = e.row_value + (across > 0 ? across : 0) + (down > 0 ? down : 0);
     if (highest > limit || lowest < -limit) return false;
-    if (e.slope > 0) t.left[lefts++] = e.bound();
-    else if (e.slope < 0) t.right[rights++] = e.bound();
-    else level = i;
+    if (e.slope == 0) level = i;
   }
   // The barycentrics' planes: E_i / D, times 2^26. rcp ~ 2^(30 + L) / D (L the bit length of D),
   // so x / D 2^26 = x rcp / 2^(4 + L); |x| < 2^30 and rcp <= 2^31: the product fits 64 bits.
@@ -201,8 +198,38 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   }
   t.row_begin = r0;
   t.row_end = r1;
-  // Walk the edges down to the first row (at most one row but at the frame's top).
-  for (std::int32_t r = t.row0; r < r0; ++r) t.next_row();
+  // The sloped edges, from the first row on: one each side, or (no horizontal edge: the three dy
+  // sum to 0) two on one side that meet at the middle vertex. A row whose centre lies above that
+  // vertex is inside the lower edge's half-plane wherever it is inside the other two (the lower
+  // edge does not reach its height), and one below is inside the upper one's: each row needs only
+  // the edge of its half. On the vertex's own row both give the same column (same direction,
+  // same bias), so the lower one takes over from the row whose centre is at or below it.
+  const SmallEdge* side[2][2] = {};  // [0] left (slope > 0), [1] right
+  int count[2] = {0, 0};
+  for (const SmallEdge& e : edge) {
+    if (e.slope != 0) {
+      const int s = e.slope > 0 ? 0 : 1;
+      side[s][count[s]++] = &e;
+    }
+  }
+  const int down = r0 - t.row0;
+  t.rows_to_turn = 0;
+  for (int s = 0; s < 2; ++s) {
+    const SmallEdge* first = side[s][0];
+    if (count[s] == 2) {
+      const bool zero_is_upper = side[s][0]->top < side[s][1]->top;
+      const SmallEdge& upper = *side[s][zero_is_upper ? 0 : 1];
+      const SmallEdge& lower = *side[s][zero_is_upper ? 1 : 0];
+      const std::int32_t turn = t.row0 + ((lower.top + 255) >> 8);  // the first row centred at or below the middle vertex
+      first = turn <= r0 ? &lower : &upper;
+      if (turn > r0 && turn < r1) {
+        t.lower = lower.bound(turn - t.row0);
+        t.rows_to_turn = turn - r0;
+        t.lower_is_left = s == 0;
+      }
+    }
+    (s == 0 ? t.left : t.right) = first->bound(down);
+  }
   covers = true;
   return true;
 }

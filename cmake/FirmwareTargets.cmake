@@ -40,6 +40,9 @@ endif()
 
 add_subdirectory(${PROJECT_SOURCE_DIR}/tools/qemu_icount ${PROJECT_BINARY_DIR}/tools/qemu_icount)
 
+# A list in CMAKE_ARGS would split at its semicolons (only the first scene would reach the
+# firmware trees): it travels with '|' between its items (LIST_SEPARATOR below).
+string(REPLACE ";" "|" sweep_bench_scenes "${SPANLIGHT_SWEEP_BENCH_SCENES}")
 foreach(cpu IN LISTS SPANLIGHT_FIRMWARE_CPUS)
   set(byproducts)
   set(apps selftest icount_calibration fault_check pose_bench live_spotlight)
@@ -61,7 +64,8 @@ foreach(cpu IN LISTS SPANLIGHT_FIRMWARE_CPUS)
       -DCMAKE_BUILD_TYPE=${SPANLIGHT_FIRMWARE_BUILD_TYPE}
       -DSPANLIGHT_HOST_TOOLS_DIR=$<TARGET_FILE_DIR:spanlight>
       -DSPANLIGHT_QEMU_ICOUNT_PLUGIN=$<TARGET_FILE:spanlight_icount>
-      "-DSPANLIGHT_SWEEP_BENCH_SCENES=${SPANLIGHT_SWEEP_BENCH_SCENES}"
+      "-DSPANLIGHT_SWEEP_BENCH_SCENES=${sweep_bench_scenes}"
+    LIST_SEPARATOR |
     BUILD_COMMAND ${CMAKE_COMMAND} --build <BINARY_DIR> --parallel ${SPANLIGHT_FIRMWARE_JOBS}
     # Always run the inner build: the outer build cannot see which sources the firmware uses.
     BUILD_ALWAYS ON

@@ -16,6 +16,19 @@ build=$(cd "${1:-$root/build}" && pwd)
 out=${2:-$root/docs/sweep}
 shift $(($# > 2 ? 2 : $#))
 cd "$root"
+# Every bench must be one the firmware trees build now: a bench left in bin/ by an earlier
+# configuration would be counted on an older engine without a word.
+for cpu in cortex-m7 cortex-m0plus; do
+  built=$(sed -n 's/^SPANLIGHT_SWEEP_BENCH_SCENES:STRING=//p' "$build/firmware-$cpu/CMakeCache.txt" 2>/dev/null || true)
+  for scene in slide_projector spot_shadow three_projectors horizon textured_room textured_room_nearest mesh_bear; do
+    case ";$built;" in
+      *";all;"* | *";$scene;"*) ;;
+      *) echo "regenerate: $build/firmware-$cpu builds sweep benches for '$built', not $scene: configure with" \
+           "-DSPANLIGHT_SWEEP_BENCH_SCENES=all until that tree's CMakeCache.txt says so, and build" >&2
+         exit 2 ;;
+    esac
+  done
+done
 mkdir -p "$out"
 # Which sources the figures come from: the commit, and any local change to the pipeline.
 {

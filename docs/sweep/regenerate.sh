@@ -16,11 +16,17 @@ build=$(cd "${1:-$root/build}" && pwd)
 out=${2:-$root/docs/sweep}
 shift $(($# > 2 ? 2 : $#))
 cd "$root"
+# slide_projector, the scene of the target figures, is counted on QEMU at every point; the shared
+# scenes with QEMU's cost-relevant grid (the default table and depth bits only); the anchor scenes
+# of shared/anchors.md (RGB565, for the comparison with tgx) and the model of 2,400 small triangles
+# (docs/meshes.md) the same way, in RGB565.
+shared=(spot_shadow three_projectors horizon)
+rgb565=(textured_room textured_room_nearest mesh_bear)
 # Every bench must be one the firmware trees build now: a bench left in bin/ by an earlier
 # configuration would be counted on an older engine without a word.
 for cpu in cortex-m7 cortex-m0plus; do
   built=$(sed -n 's/^SPANLIGHT_SWEEP_BENCH_SCENES:STRING=//p' "$build/firmware-$cpu/CMakeCache.txt" 2>/dev/null || true)
-  for scene in slide_projector spot_shadow three_projectors horizon textured_room textured_room_nearest mesh_bear; do
+  for scene in slide_projector "${shared[@]}" "${rgb565[@]}"; do
     case ";$built;" in
       *";all;"* | *";$scene;"*) ;;
       *) echo "regenerate: $build/firmware-$cpu builds sweep benches for '$built', not $scene: configure with" \
@@ -35,16 +41,12 @@ mkdir -p "$out"
   echo "commit $(git rev-parse HEAD 2>/dev/null || echo unknown), swept $(date -u +%Y-%m-%d)"
   git status --short -- pipeline fixedpoint firmware 2>/dev/null | sed 's/^/local change: /'
 } >"$out/SOURCE.txt"
-# slide_projector, the scene of the target figures, with every point counted on QEMU;
-# the others with QEMU's cost-relevant grid (the default table and depth bits only).
 "$build/bin/spanlight" sweep scenes/slide_projector.json --out "$out/slide_projector" --qemu-grid full --pictures 3 \
   --firmware-dir "$build" "$@"
-for scene in spot_shadow three_projectors horizon; do
+for scene in "${shared[@]}"; do
   "$build/bin/spanlight" sweep "scenes/$scene.json" --out "$out/$scene" --pictures 3 --firmware-dir "$build" "$@"
 done
-# The anchor scenes of shared/anchors.md (RGB565), for the comparison with tgx, and the model
-# of 2,400 small triangles (docs/meshes.md), baked the same way.
-for scene in textured_room textured_room_nearest mesh_bear; do
+for scene in "${rgb565[@]}"; do
   "$build/bin/spanlight" sweep "scenes/$scene.json" --out "$out/$scene" --format rgb565 --pictures 2 \
     --firmware-dir "$build" "$@"
 done

@@ -125,12 +125,9 @@ struct RowInterpolation {
   std::int32_t a, length;    // first column and b - a > 0
   std::uint32_t e_a, e_b;    // the divisors at a and b, scaled together below 2^31
   std::int32_t f_a[3], df[3];  // |f| < 2^30 at both ends, so |df| < 2^31
-  int components;              // 2 for uv, 3 for a projector: the values `at` fills
 
-  constexpr void init(std::int32_t column_a, std::int32_t column_b, const GroupPoint& pa, const GroupPoint& pb,
-                      int count) {
+  constexpr void init(std::int32_t column_a, std::int32_t column_b, const GroupPoint& pa, const GroupPoint& pb) {
     a = column_a;
-    components = count;
     length = column_b - column_a;
     const auto da = static_cast<std::uint64_t>(pa.denominator), db = static_cast<std::uint64_t>(pb.denominator);
     const int excess = fixedpoint::bit_length(da > db ? da : db) - 31;
@@ -144,9 +141,10 @@ struct RowInterpolation {
   }
 
   // The point at column x in [a, b]; its denominator is (b - x) E_a + (x - a) E_b,
-  // the divisor up to the row's constant (segment lengths compare ratios only).
+  // the divisor up to the row's constant (segment lengths compare ratios only). Fills the first
+  // `components` values (2 for uv, 3 for a projector's s, t, r).
   template <typename Divide>
-  constexpr void at(std::int32_t x, const Divide& divide, GroupPoint& out) const {
+  constexpr void at(std::int32_t x, const Divide& divide, int components, GroupPoint& out) const {
     const auto before = static_cast<std::uint32_t>(x - a), after = static_cast<std::uint32_t>(length) - before;
     const std::uint64_t num = fixedpoint::mul_u32_u16(e_b, before);  // < 2^12 * 2^31 (spans < 2^13 px)
     const std::uint64_t den = num + fixedpoint::mul_u32_u16(e_a, after);

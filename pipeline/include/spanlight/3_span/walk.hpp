@@ -170,7 +170,7 @@ struct GroupSpan {
       return;
     }
     mode = GroupMode::interpolated;
-    row.init(c0, c1, first, last, components);
+    row.init(c0, c1, first, last);
     planner.start(c0, c1, row.e_a, row.e_b, texel_delta8(first, last, group, c), scale.texel_bits, c.tolerance_log2,
                   c.span_log2);
     take(first);
@@ -246,10 +246,10 @@ struct GroupSpan {
     while ((std::int32_t{1} << k) > left) --k;
     segment_end = column + (std::int32_t{1} << k);
     if (segment_end == c1) end = last;
-    else row.at(segment_end, divide, end);
+    else row.at(segment_end, divide, components, end);
     if (k == 0) return;  // one pixel: nothing steps
     GroupPoint middle;
-    row.at(column + (std::int32_t{1} << (k - 1)), divide, middle);
+    row.at(column + (std::int32_t{1} << (k - 1)), divide, components, middle);
     set_steps(exact_start, middle, end, k);
   }
 
@@ -263,8 +263,8 @@ struct GroupSpan {
     const std::int32_t start = c1 - (std::int32_t{1} << k);
     if (start == column || start < planner.a || planner.length_log2_at(start) < k) return false;
     GroupPoint first, middle;
-    row.at(start, divide, first);
-    row.at(start + (std::int32_t{1} << (k - 1)), divide, middle);
+    row.at(start, divide, components, first);
+    row.at(start + (std::int32_t{1} << (k - 1)), divide, components, middle);
     end = last;
     segment_end = c1;
     set_steps(first.value, middle, last, k);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 namespace fixedpoint {
 
@@ -63,18 +64,90 @@ inline constexpr bool has_long_multiply = true;
 // The same product for code that runs per triangle or per vertex, not per
 // pixel: on ARMv6-M one out-of-line copy of the four-product routine (a call
 // is cheaper than __muldi3 and the flash is paid once, not at every site).
+#if defined(__ARM_ARCH_6M__)
+// Written out in Thumb-1: GCC schedules mul_s32_halves into a stack frame with
+// spills (37 instructions); here the middle sum's carry goes through ADCS and
+// nothing leaves the registers (24 instructions and the push and pop). The same
+// value as mul_s32_halves: ua ub = hh 2^32 + (lh + hl) 2^16 + ll, minus the
+// two's complement correction in the high word.
+[[gnu::noinline]] inline std::int64_t mul_s32_thumb1(std::int32_t a, std::int32_t b) {
+  auto lo = static_cast<std::uint32_t>(a), hi = static_cast<std::uint32_t>(b);
+  std::uint32_t al, ah, bl, bh, correction;
+  __asm__(
+      ".syntax unified\n\t"  // GCC hands Thumb-1 inline assembly over in divided syntax
+      "uxth  %[al], %[lo]\n\t"
+      "lsrs  %[ah], %[lo], #16\n\t"
+      "uxth  %[bl], %[hi]\n\t"
+      "lsrs  %[bh], %[hi], #16\n\t"
+      "asrs  %[corr], %[lo], #31\n\t"
+      "ands  %[corr], %[hi]\n\t"         // b if a < 0
+      "asrs  %[hi], %[hi], #31\n\t"
+      "ands  %[hi], %[lo]\n\t"           // a if b < 0
+      "adds  %[corr], %[corr], %[hi]\n\t"
+      "movs  %[lo], %[al]\n\t"
+      "muls  %[lo], %[bl], %[lo]\n\t"    // ll = al bl
+      "muls  %[al], %[bh], %[al]\n\t"    // lh = al bh
+      "muls  %[bl], %[ah], %[bl]\n\t"    // hl = ah bl
+      "muls  %[ah], %[bh], %[ah]\n\t"    // hh = ah bh
+      "movs  %[bh], #0\n\t"
+      "adds  %[al], %[al], %[bl]\n\t"    // mid = lh + hl, its carry out
+      "adcs  %[bh], %[bh]\n\t"           // the carry, worth 2^48
+      "lsls  %[bh], %[bh], #16\n\t"
+      "adds  %[ah], %[ah], %[bh]\n\t"
+      "lsls  %[bl], %[al], #16\n\t"
+      "lsrs  %[al], %[al], #16\n\t"
+      "adds  %[lo], %[lo], %[bl]\n\t"    // lo = ll + (mid << 16), its carry out
+      "adcs  %[ah], %[al]\n\t"           // hi = hh + (mid >> 16) + the carries
+      "subs  %[hi], %[ah], %[corr]\n\t"  // signed: minus the correction
+      ".syntax divided\n\t"
+      : [lo] "+l"(lo), [hi] "+l"(hi), [al] "=&l"(al), [ah] "=&l"(ah), [bl] "=&l"(bl), [bh] "=&l"(bh),
+        [corr] "=&l"(correction)
+      :
+      : "cc");
+  return static_cast<std::int64_t>((std::uint64_t{hi} << 32) | lo);
+}
+#endif
 [[gnu::noinline]] constexpr std::int64_t mul_s32_halves_outlined(std::int32_t a, std::int32_t b) {
   return mul_s32_halves(a, b);
 }
 [[gnu::always_inline]] constexpr std::int64_t mul_s32_setup(std::int32_t a, std::int32_t b) {
-  if constexpr (has_long_multiply) return std::int64_t{a} * b;
-  else return mul_s32_halves_outlined(a, b);
+  if constexpr (has_long_multiply) {
+    return std::int64_t{a} * b;
+  } else {
+#if defined(__ARM_ARCH_6M__)
+    if (!std::is_constant_evaluated()) return mul_s32_thumb1(a, b);
+#endif
+    return mul_s32_halves_outlined(a, b);
+  }
 }
 
 // a * b for b < 2^16: two 16x16 products on ARMv6-M instead of four.
 [[gnu::always_inline]] constexpr std::uint64_t mul_u32_u16(std::uint32_t a, std::uint32_t b) {
   if constexpr (has_long_multiply) return std::uint64_t{a} * b;
   else return (std::uint64_t{(a >> 16) * b} << 16) + (a & 0xFFFFu) * b;  // each product < 2^32
+}
+
+// x * g for 0 <= g < 2^16 when the product fits int64, without __muldi3 on ARMv6-M: the
+// high word's product and the low word's (32 x 16) add up to it modulo 2^64.
+[[gnu::always_inline]] constexpr std::int64_t mul_s64_u16(std::int64_t x, std::uint32_t g) {
+  if constexpr (has_long_multiply) {
+    return x * static_cast<std::int64_t>(g);
+  } else {
+    const auto u = static_cast<std::uint64_t>(x);
+    const auto hi = static_cast<std::uint32_t>(u >> 32), lo = static_cast<std::uint32_t>(u);
+    return static_cast<std::int64_t>((std::uint64_t{hi * g} << 32) + mul_u32_u16(lo, g));
+  }
+}
+
+// x * g for any g < 2^32 when the product fits int64: the same split, with a 32 x 32 low product.
+[[gnu::always_inline]] constexpr std::int64_t mul_s64_u32(std::int64_t x, std::uint32_t g) {
+  if constexpr (has_long_multiply) {
+    return x * static_cast<std::int64_t>(g);
+  } else {
+    const auto u = static_cast<std::uint64_t>(x);
+    const auto hi = static_cast<std::uint32_t>(u >> 32), lo = static_cast<std::uint32_t>(u);
+    return static_cast<std::int64_t>((std::uint64_t{hi * g} << 32) + mul_u32(lo, g));
+  }
 }
 
 // floor(a * b / 2^s) for any int64 a, |b| < 2^31 and 0 <= s <= 32, without
@@ -100,6 +173,20 @@ constexpr std::uint32_t low_word_shifted_right(std::uint64_t x, int s) {
   const auto lo = static_cast<std::uint32_t>(x), hi = static_cast<std::uint32_t>(x >> 32);
   return (lo >> s) | ((hi << 1) << (31 - s));  // (hi << 1) << (31 - s): hi << (32 - s) without UB at s = 0
 }
+// Bits s .. s + 31 of x, 0 <= s < 64 (above bit 63: zeros): a shift that keeps one word.
+constexpr std::uint32_t word_shifted_right(std::uint64_t x, int s) {
+  return s < 32 ? low_word_shifted_right(x, s) : static_cast<std::uint32_t>(x >> 32) >> (s - 32);
+}
+// floor(x / 2^s), 0 <= s < 64, for a result that fits int32: the same without a 64-bit shift.
+constexpr std::int32_t floor_shifted_right(std::int64_t x, int s) {
+  const auto u = static_cast<std::uint64_t>(x);
+  return s < 32 ? static_cast<std::int32_t>(low_word_shifted_right(u, s))
+                : static_cast<std::int32_t>(static_cast<std::uint32_t>(u >> 32)) >> (s - 32);  // arithmetic: floor
+}
+// Number of bits needed to hold x (0 for 0), for 32-bit values: one 32-bit count (on ARMv6-M
+// __clzsi2 alone, where bit_length's 64-bit count goes through __clzdi2).
+constexpr int bit_length32(std::uint32_t x) { return x == 0 ? 0 : 32 - clz32(x); }
+
 // x << s as a 64-bit value, 0 <= s < 32.
 constexpr std::uint64_t widened_shifted_left(std::uint32_t x, int s) {
   return (std::uint64_t{(x >> 1) >> (31 - s)} << 32) | (x << s);

@@ -101,7 +101,7 @@ struct FloorDivisor {
     if constexpr (has_divide_instruction) {
       return n / d;
     } else {
-      auto q = static_cast<std::uint32_t>(mul_u32(n, y.mantissa) >> y.shift);
+      auto q = word_shifted_right(mul_u32(n, y.mantissa), y.shift);  // y.shift in [31, 62] for d < 2^31
       std::uint32_t r = n - q * d;
       while (r >= d) {
         r -= d;

@@ -57,12 +57,16 @@ template <int TableBits, int NewtonSteps>
 constexpr std::uint32_t reciprocal_normalised(std::uint32_t m) {
   static_assert(NewtonSteps >= 0 && NewtonSteps <= 2, "0, 1 or 2 Newton steps");
   const std::uint32_t index = (m >> (31 - TableBits)) & ((1u << TableBits) - 1u);
-  std::uint32_t y = static_cast<std::uint32_t>(reciprocal_table<TableBits>.entry[index]) << 15;  // Q1.31
+  const std::uint32_t entry = reciprocal_table<TableBits>.entry[index];  // < 2^16
+  std::uint32_t y = entry << 15;                                          // Q1.31
   for (int step = 0; step < NewtonSteps; ++step) {
     // m*y is Q2.62 and close to 2^62; 2 - m*y is then close to 1 (Q2.62: 2^63 - m*y).
-    const std::uint64_t my = mul_u32(m, y);
+    // The first step's y is the entry << 15: m*y = (m * entry) << 15 (< 2^63) and
+    // (y * two_minus) >> 31 = (entry * two_minus) >> 16, the same values from 32 x 16 products
+    // (two 16-bit multiplies each on ARMv6-M, not four).
+    const std::uint64_t my = step == 0 ? mul_u32_u16(m, entry) << 15 : mul_u32(m, y);
     const std::uint32_t two_minus = static_cast<std::uint32_t>(((std::uint64_t{1} << 63) - my) >> 31);  // Q1.31
-    y = static_cast<std::uint32_t>(mul_u32(y, two_minus) >> 31);
+    y = static_cast<std::uint32_t>(step == 0 ? mul_u32_u16(two_minus, entry) >> 16 : mul_u32(y, two_minus) >> 31);
   }
   return y;
 }

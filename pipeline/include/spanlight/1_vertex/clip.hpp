@@ -35,16 +35,24 @@ struct ClipPolygon {
 // coordinates, so the distance along an edge is linear in the edge parameter.
 enum class ClipPlane : std::uint8_t { near, far, left, right, bottom, top };
 
-constexpr std::int64_t plane_distance(ClipPlane plane, const Vec4Wide& c, std::int64_t guard) {
+// The guard planes' G w / 4 for guard G in [1, 6] (draw.hpp: guard_band): a 32 x 16 product,
+// no __muldi3 on ARMv6-M. Computed once for the planes of a point.
+constexpr std::int64_t guard_w(const Vec4Wide& c, std::int64_t guard) {
+  return fixedpoint::mul_s64_u16(c.w >> 2, static_cast<std::uint32_t>(guard));
+}
+constexpr std::int64_t plane_distance_with(ClipPlane plane, const Vec4Wide& c, std::int64_t gw) {
   switch (plane) {
     case ClipPlane::near: return c.z + c.w;
     case ClipPlane::far: return c.w - c.z;
-    case ClipPlane::left: return guard * (c.w >> 2) + (c.x >> 2);
-    case ClipPlane::right: return guard * (c.w >> 2) - (c.x >> 2);
-    case ClipPlane::bottom: return guard * (c.w >> 2) + (c.y >> 2);
-    case ClipPlane::top: return guard * (c.w >> 2) - (c.y >> 2);
+    case ClipPlane::left: return gw + (c.x >> 2);
+    case ClipPlane::right: return gw - (c.x >> 2);
+    case ClipPlane::bottom: return gw + (c.y >> 2);
+    case ClipPlane::top: return gw - (c.y >> 2);
   }
   return 0;
+}
+constexpr std::int64_t plane_distance(ClipPlane plane, const Vec4Wide& c, std::int64_t guard) {
+  return plane_distance_with(plane, c, guard_w(c, guard));
 }
 
 // a + (b - a) * t, t in Q2.30 within [0, 1]. |b - a| < 2^62 holds for clip

@@ -41,7 +41,13 @@ struct VertexDivider {
   }
   // (numerator / w) * 2^32, numerator >> k < 2^31 when |numerator| <= 7*w.
   constexpr std::int64_t ratio_q32(std::int64_t numerator) const {
-    const std::int64_t product = (numerator >> k) * static_cast<std::int64_t>(rcp.mantissa);
+    const std::int64_t n = numerator >> k;
+    // ARMv6-M: a 32 x 32 product, not __muldi3, when n fits 32 bits, as it does but for a cut
+    // vertex within lerp's rounding of the eye (the mantissa is below 2^31).
+    const bool narrow = !fixedpoint::has_long_multiply && n == static_cast<std::int32_t>(n);
+    const std::int64_t product =
+        narrow ? fixedpoint::mul_s32_setup(static_cast<std::int32_t>(n), static_cast<std::int32_t>(rcp.mantissa))
+               : n * static_cast<std::int64_t>(rcp.mantissa);
     const int shift = rcp.shift - 32;  // -1 only for w < 2^4 raw, where the product is tiny
     return shift >= 0 ? product >> shift : product * 2;
   }
@@ -62,8 +68,10 @@ constexpr ScreenVertex project(const Vec4Wide& c, int width, int height) {
   // rounding is a sizeable part of w. Clamping restores the bound and changes nothing else.
   constexpr std::int64_t limit = (std::int64_t{1} << 21) - 1;
   auto clamp_to_limit = [](std::int64_t value) { return value > limit ? limit : (value < -limit ? -limit : value); };
-  v.x = static_cast<std::int32_t>(clamp_to_limit(round_q32_to_int64(x_ratio * (std::int64_t{width} << (subpixel_bits - 1)))));
-  v.y = static_cast<std::int32_t>(clamp_to_limit(round_q32_to_int64(y_ratio * (std::int64_t{height} << (subpixel_bits - 1)))));
+  // mul_s64_u32: the product without __muldi3 on ARMv6-M.
+  const auto x_scale = static_cast<std::uint32_t>(width) << (subpixel_bits - 1), y_scale = static_cast<std::uint32_t>(height) << (subpixel_bits - 1);
+  v.x = static_cast<std::int32_t>(clamp_to_limit(round_q32_to_int64(fixedpoint::mul_s64_u32(x_ratio, x_scale))));
+  v.y = static_cast<std::int32_t>(clamp_to_limit(round_q32_to_int64(fixedpoint::mul_s64_u32(y_ratio, y_scale))));
   const std::int64_t z = (z_ratio + (std::int64_t{1} << 2)) >> 3;  // /2, Q.32 -> Q.30
   v.z = static_cast<std::int32_t>(z < 0 ? 0 : (z > (1 << depth_frac_bits) ? (1 << depth_frac_bits) : z));
   v.inv_w_mantissa = div.rcp.mantissa;

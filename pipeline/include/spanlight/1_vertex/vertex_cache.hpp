@@ -25,8 +25,9 @@ inline constexpr ClipPlane clip_planes[] = {ClipPlane::near, ClipPlane::far, Cli
                                            ClipPlane::right, ClipPlane::bottom, ClipPlane::top};
 
 constexpr std::uint8_t outside_planes(const Vec4Wide& c, std::int64_t guard) {
+  const std::int64_t gw = guard_w(c, guard);
   std::uint8_t bits = 0;
-  for (int k = 0; k < 6; ++k) bits = static_cast<std::uint8_t>(bits | (plane_distance(clip_planes[k], c, guard) < 0 ? 1u << k : 0u));
+  for (int k = 0; k < 6; ++k) bits = static_cast<std::uint8_t>(bits | (plane_distance_with(clip_planes[k], c, gw) < 0 ? 1u << k : 0u));
   return bits;
 }
 
@@ -43,8 +44,9 @@ constexpr bool object_beyond_a_plane(const Bounds& box, const Mat4Block& to_clip
     const std::int32_t p[3] = {(corner & 1u) ? box.max[0] : box.min[0], (corner & 2u) ? box.max[1] : box.min[1],
                                (corner & 4u) ? box.max[2] : box.min[2]};
     const Vec4Wide c = transform(to_clip, p);
+    const std::int64_t gw = guard_w(c, guard);
     unsigned beyond = 0;
-    for (int k = 0; k < 6; ++k) beyond |= plane_distance(clip_planes[k], c, guard) < -margin ? 1u << k : 0u;
+    for (int k = 0; k < 6; ++k) beyond |= plane_distance_with(clip_planes[k], c, gw) < -margin ? 1u << k : 0u;
     beyond_all &= beyond;
   }
   return beyond_all != 0;

@@ -7,7 +7,10 @@
 //   scale has room, else within the stated 2^(2k-1) units over 2^k pixels;
 // * QuadraticRows walks the small triangle's quadratic exactly (mod 2^32);
 // * the small triangle's barycentric planes stay within their derived bound of
-//   the exact E_i / D at every pixel of the box.
+//   the exact E_i / D at every pixel of the box;
+// * the small triangle's quadratic uv stays within 2^-T texel of the exact
+//   perspective value at every pixel it covers, wherever quadratic_enough lets
+//   the triangle take the small path.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -237,6 +240,106 @@ TEST_CASE("a small triangle's barycentric planes stay within small.hpp's stated 
   const PlaneErrors r = plane_errors();
   INFO("worst plane error " << r.worst_units << " units of 2^-26; small.hpp states at most 65");
   CHECK(r.worst_units <= 65.0);
+}
+
+namespace {
+
+struct QuadraticErrors {
+  long long triangles = 0, pixels = 0, over = 0;
+  double worst_ratio = 0.0;  // error / 2^-T texel
+};
+
+// Random small triangles with perspective weights up to 1/32 apart and uv ranges from a
+// texel to 2^17 texels, walked as draw_small walks them (setup_small's edges, one
+// QuadraticRows a coordinate), against u = sum l_k u_k W_k / sum l_k W_k in double.
+QuadraticErrors quadratic_errors(int tolerance_log2) {
+  std::independent_bits_engine<std::mt19937, 32, std::uint32_t> random(0x9a0d + tolerance_log2);
+  constexpr int frac = 8;
+  QuadraticErrors r;
+  for (int n = 0; n < 4000; ++n) {
+    // A repeating texture of 256 or 4096 texels a side: 2^24 or 2^20 step units a texel.
+    const int texel_bits = n % 2 == 0 ? 24 : 20, shift = texel_bits - frac;
+    spanlight::ScreenVertex v[3]{};
+    const std::int32_t extent = 256 + static_cast<std::int32_t>(random() % (spanlight::small_triangle_extent - 256));
+    const std::int32_t range_max = std::int32_t{1} << (8 + random() % 18);  // exact units: 1 to 2^17 texels
+    std::int32_t uv[3][2];
+    for (int k = 0; k < 3; ++k) {
+      v[k].x = 100000 + static_cast<std::int32_t>(random() % static_cast<std::uint32_t>(extent));
+      v[k].y = 3000 + static_cast<std::int32_t>(random() % static_cast<std::uint32_t>(extent));
+      v[k].inv_w_mantissa = (1u << 30) + random() % (1u << 25);  // within 2^25 / 2^30 = 1/32 of each other
+      v[k].inv_w_exponent = 40;
+      for (auto& c : uv[k]) c = static_cast<std::int32_t>(random() % static_cast<std::uint32_t>(range_max));
+    }
+    spanlight::SmallTriangle t{};
+    bool covers = false;
+    if (!spanlight::setup_small(v, spanlight::Cull::none, 1 << 14, t, covers) || !covers) continue;
+    std::int32_t range = 0;
+    for (int c = 0; c < 2; ++c) {
+      const auto [lo, hi] = std::minmax({uv[0][c], uv[1][c], uv[2][c]});
+      range = std::max(range, hi - lo);
+    }
+    spanlight::PerspectiveWeights w{};
+    if (!spanlight::perspective_weights_of(v, w) || !spanlight::quadratic_enough(w, range, frac, texel_bits, tolerance_log2)) continue;
+    ++r.triangles;
+    // As draw_small: e's plane, then one quadratic a coordinate, from the first row.
+    const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
+    const spanlight::AffineAttribute e = t.affine(w.e[i0], w.e[i1] - w.e[i0], w.e[i2] - w.e[i0], 0);
+    spanlight::QuadraticRows rows[2];
+    for (int c = 0; c < 2; ++c) {
+      const auto base = static_cast<std::uint32_t>(uv[i0][c]) << shift;
+      rows[c].start(spanlight::perspective_quadratic(t, base, shift, range, uv[i1][c] - uv[i0][c], w.e[i1],
+                                                     uv[i2][c] - uv[i0][c], w.e[i2], e),
+                    static_cast<std::uint32_t>(t.row_begin - t.row0));
+    }
+    const double area = double(v[1].x - v[0].x) * double(v[2].y - v[0].y) - double(v[1].y - v[0].y) * double(v[2].x - v[0].x);
+    auto lambda = [&](int k, double x, double y) {  // the screen barycentric of vertex k
+      const spanlight::ScreenVertex &a = v[(k + 1) % 3], &b = v[(k + 2) % 3];
+      return ((b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x)) / area;
+    };
+    for (std::int32_t row = t.row_begin; row < t.row_end; ++row) {
+      std::int32_t lo = -1000, hi = 1000;
+      if (t.columns(lo, hi)) {
+        for (std::int32_t c = lo; c <= hi; ++c) {
+          const double x = (t.column0 + c) * 256.0 + 128, y = row * 256.0 + 128;
+          double num[2] = {0, 0}, den = 0;
+          for (int k = 0; k < 3; ++k) {
+            const double weight = lambda(k, x, y) * v[k].inv_w_mantissa;
+            den += weight;
+            for (int q = 0; q < 2; ++q) num[q] += weight * uv[k][q];
+          }
+          ++r.pixels;
+          for (int q = 0; q < 2; ++q) {
+            std::uint32_t value, step, curve;
+            rows[q].at(static_cast<std::uint32_t>(c), value, step, curve);
+            // The difference modulo the texture's wrap (2^32 step units), in texels.
+            const double exact_units = std::fmod(num[q] / den * std::ldexp(1.0, shift), 0x1p32);
+            const double diff = std::ldexp(std::remainder(double(value) - exact_units, 0x1p32), -texel_bits);
+            const double ratio = std::fabs(diff) * std::ldexp(1.0, tolerance_log2);
+            r.worst_ratio = std::max(r.worst_ratio, ratio);
+            r.over += ratio > 1.0;
+          }
+        }
+      }
+      t.next_row();
+      rows[0].next_row();
+      rows[1].next_row();
+    }
+  }
+  return r;
+}
+
+}  // namespace
+
+TEST_CASE("a small triangle's quadratic uv stays within 2^-T texel of the perspective value wherever it is allowed",
+          "[span][small]") {
+  for (const int tolerance_log2 : {3, 5, 7}) {
+    const QuadraticErrors r = quadratic_errors(tolerance_log2);
+    std::printf("T = %d: %lld small triangles allowed, %lld pixels, worst error %.3f of 2^-T texel\n", tolerance_log2,
+                r.triangles, r.pixels, r.worst_ratio);
+    INFO("T = " << tolerance_log2 << ": " << r.triangles << " triangles, worst error " << r.worst_ratio << " of 2^-T");
+    CHECK(r.triangles > 200);
+    CHECK(r.over == 0);
+  }
 }
 
 TEST_CASE("divide_by_48 is x / 48 for every x of its range", "[span]") {

@@ -37,7 +37,7 @@ inline constexpr std::int32_t small_triangle_extent = 1 << 14;  // subpixels: 64
 struct EdgeBound {
   std::int32_t quotient, remainder, quotient_step, remainder_step, divisor;
 
-  constexpr void next_row() {
+  [[gnu::always_inline]] constexpr void next_row() {
     quotient += quotient_step;
     remainder += remainder_step;
     if (remainder >= divisor) {
@@ -116,7 +116,9 @@ struct SmallTriangle {
     hi = right.quotient < hi ? right.quotient : hi;
     return lo <= hi;
   }
-  constexpr void next_row() {
+  // Out of line: its two bounds step in registers of their own (inlined into the row loop, they
+  // spill there on Cortex-M0+).
+  [[gnu::noinline]] constexpr void next_row() {
     left.next_row();
     right.next_row();
     if (--rows_to_turn == 0) (lower_is_left ? left : right) = lower;
@@ -176,12 +178,14 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   }
   // The barycentrics' planes: E_i / D, times 2^26. rcp ~ 2^(30 + L) / D (L the bit length of D),
   // so x / D 2^26 = x rcp / 2^(4 + L); |x| < 2^30 and rcp <= 2^31: the product fits 64 bits.
-  const int area_log2 = fixedpoint::bit_length(static_cast<std::uint64_t>(area2));
+  const int area_log2 = fixedpoint::bit_length32(static_cast<std::uint32_t>(area2));
   const std::uint32_t rcp = fixedpoint::reciprocal_normalised<8, 2>(static_cast<std::uint32_t>(area2) << (32 - area_log2));
-  const int shift = 4 + area_log2;
+  const int shift = 4 + area_log2;  // <= 33
+  const std::int64_t half = std::int64_t{1} << (shift - 1);
   auto plane = [&](const SmallEdge& e) {
-    auto scaled = [&](std::int32_t x) {  // rounded: within 2^-27 of x rcp / 2^shift
-      return static_cast<std::int32_t>((fixedpoint::mul_s32_u32(x, rcp) + (std::int64_t{1} << (shift - 1))) >> shift);
+    // Rounded: within 2^-27 of x rcp / 2^shift (|x rcp| < 2^61: no overflow). rcp < 2^31 fits int32.
+    auto scaled = [&](std::int32_t x) {
+      return fixedpoint::floor_shifted_right(fixedpoint::mul_s32_setup(x, static_cast<std::int32_t>(rcp)) + half, shift);
     };
     return BarycentricPlane{scaled(e.row_value), scaled(e.slope), scaled(e.row_step)};
   };
@@ -204,7 +208,9 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   // edge does not reach its height), and one below is inside the upper one's: each row needs only
   // the edge of its half. On the vertex's own row both give the same column (same direction,
   // same bias), so the lower one takes over from the row whose centre is at or below it.
-  const SmallEdge* side[2][2] = {};  // [0] left (slope > 0), [1] right
+  // [0] left (slope > 0), [1] right. Each side gets one edge at least (the three dy sum to 0 and
+  // are not all 0), and side[s][1] is read only when count[s] == 2: no zeroing (a memset call).
+  const SmallEdge* side[2][2];
   int count[2] = {0, 0};
   for (const SmallEdge& e : edge) {
     if (e.slope != 0) {
@@ -236,12 +242,13 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
 
 // Perspective-correct uv over a small triangle as a quadratic. With the
 // vertices' perspective weights w_i = w' (1 + e_i) about their mean w', the
-// exact value is u = u_0 + (A + B) / (1 + e), where A = sum l_i (u_i - u_0),
-// B = sum l_i (u_i - u_0) e_i and e = sum l_i e_i are affine on screen. The
-// quadratic q = u_0 + A (1 - e) + B differs from it by
-//   u - q = e (A e - B) / (1 + e),  |u - q| <= 2 D eps^2 / (1 - eps),
-// D the uv range and eps = max |e_i| <= 1/32 (then 2 / (1 - eps) < 3). Along a
-// row it steps with two adds a pixel: q(c + 1) - q(c) = step, step += curve.
+// exact value is u = u_0 + C / (1 + e), where C = sum l_i (u_i - u_0)(1 + e_i)
+// and e = sum l_i e_i are affine on screen. The quadratic q = u_0 + C (1 - e)
+// differs from it by
+//   u - q = C e^2 / (1 + e),  |u - q| <= D (1 + eps) eps^2 / (1 - eps) < 1.07 D eps^2
+// inside the triangle (|C| <= (1 + eps) D there), D the uv range and
+// eps = max |e_i| <= 1/32. Along a row it steps with two adds a pixel:
+// q(c + 1) - q(c) = step, step += curve.
 struct PerspectiveWeights {
   std::int32_t e[3];  // e_i, Q0.30 (|e_i| <= 2^25)
   std::int32_t largest;
@@ -262,7 +269,8 @@ constexpr bool perspective_weights_of(const ScreenVertex (&v)[3], PerspectiveWei
   out.largest = 0;
   for (int i = 0; i < 3; ++i) {
     // 3 w_i / sum - 1 in Q0.30: 3 w_i < 2^32, times the mantissa (< 2^31) over 2^(shift - 30).
-    const std::int64_t ratio = static_cast<std::int64_t>(fixedpoint::mul_u32(3u * w[i], rcp.mantissa) >> (rcp.shift - 30));
+    // The ratio is at most 3 * 2^30 (3 w_i / sum <= 3, y <= 1 / sum): one word.
+    const std::int64_t ratio = fixedpoint::word_shifted_right(fixedpoint::mul_u32(3u * w[i], rcp.mantissa), rcp.shift - 30);
     const std::int64_t e = ratio - (std::int64_t{1} << 30);
     if (e > (1 << 25) || e < -(1 << 25)) return false;  // |e_i| <= 1/32: |sum l_i e_i| < 2^30.2 with |l_i| <= 12
     out.e[i] = static_cast<std::int32_t>(e);
@@ -272,31 +280,42 @@ constexpr bool perspective_weights_of(const ScreenVertex (&v)[3], PerspectiveWei
   return true;
 }
 
-// Whether the quadratic is within 2^-T texel: 3 D eps^2 <= 2^-T (D in texels * 2^frac).
-constexpr bool quadratic_enough(const PerspectiveWeights& w, std::int32_t uv_range, int frac, int tolerance_log2) {
+// Whether the quadratic is within 2^-T texel of the perspective value at every pixel the
+// triangle covers, D = uv_range in texels * 2^frac and 2^texel_bits step units a texel:
+//   its own error (above)                            < 1.07 D eps^2,
+//   the planes' rounding (SmallTriangle::affine)     moves C by (|d1| + |d2|)(1 + eps) 130 * 2^-27
+//                                                    < D 2^-18.9, and C e by |C| 130 * 2^-30 < D 2^-22.9,
+//   the floors of d (1 + e_k) 2^extra                < 2^-extra <= max(D 2^-25, one step unit),
+//   the coefficients' floors (QuadraticAttribute)    < 3 * 65^2 + 2 * 65 + 1 < 2^14 - 1 step units,
+// so 1.125 D eps^2 + D 2^-18 <= 2^-T - 2^(14 - texel_bits) texel is enough.
+constexpr bool quadratic_enough(const PerspectiveWeights& w, std::int32_t uv_range, int frac, int texel_bits,
+                                int tolerance_log2) {
   if (tolerance_log2 == 0) return true;
-  const std::uint64_t eps2 = fixedpoint::mul_u32(static_cast<std::uint32_t>(w.largest), static_cast<std::uint32_t>(w.largest)) >> 30;  // Q0.30, < 2^24
-  const std::uint64_t error = 3u * fixedpoint::mul_u32(static_cast<std::uint32_t>(uv_range), static_cast<std::uint32_t>(eps2));
-  const int scale = 30 + frac - tolerance_log2;  // error <= 2^scale
-  return scale >= 63 || error <= (std::uint64_t{1} << scale);
+  const auto largest = static_cast<std::uint32_t>(w.largest);
+  const auto eps2 = static_cast<std::uint32_t>(fixedpoint::mul_u32(largest, largest) >> 30);  // Q0.30, <= 2^20
+  // In exact units * 2^30: D (1.125 eps^2 + 2^-18) < 2^26 * 2^21.
+  const std::uint64_t error = fixedpoint::mul_u32(static_cast<std::uint32_t>(uv_range), eps2 + (eps2 >> 3) + (1u << 12));
+  const int budget_log2 = 30 + frac - tolerance_log2, rounding_log2 = 30 + frac + 14 - texel_bits;
+  if (rounding_log2 >= budget_log2) return false;
+  if (budget_log2 >= 63) return true;
+  return error <= (std::uint64_t{1} << budget_log2) - (std::uint64_t{1} << rounding_log2);
 }
 
 // One coordinate (u or v) over a small triangle as a polynomial in the column
 // c and row r from the corner, in the step scale (wrapping modulo 2^32, as a
 // repeating texture's coordinate does):
 //   q = q00 + q10 c + q01 r + q20 c^2 + q11 c r + q02 r^2,
-// from q = u_0 + A (1 - e) + B with A, B, e affine (each product of an affine
-// term and e is /2^30). The coefficients are rounded in the step scale, at
-// least 2^20 units a texel here (repeating textures only): over the 64 x 64 box
-// the six roundings add below 6 * 2^12 < 2^15 units, 2^-5 of a 2^-10 texel.
+// from q = u_0 + C (1 - e) with C and e affine (each product of C's terms and
+// e's is /2^30). The coefficients are floored in the step scale (one unit each),
+// so at column c and row r <= 65 of the box they add less than
+// 1 + c + r + c^2 + c r + r^2 < 2^14 units (quadratic_enough counts them).
 struct QuadraticAttribute {
   std::uint32_t q00, q10, q01, q20, q11, q02;
 
-  // From the affine A, B (exact units * 2^extra) and e (Q0.30), u_0 in the step scale, to_step = shift - extra.
-  static constexpr QuadraticAttribute of(std::uint32_t base, const AffineAttribute& a, const AffineAttribute& b,
-                                         const AffineAttribute& e, int to_step) {
-    const auto A0 = static_cast<std::int32_t>(a.at_corner), Ac = static_cast<std::int32_t>(a.per_column),
-               Ar = static_cast<std::int32_t>(a.per_row);
+  // From the affine C (exact units * 2^extra) and e (Q0.30), u_0 in the step scale, to_step = shift - extra.
+  static constexpr QuadraticAttribute of(std::uint32_t base, const AffineAttribute& c, const AffineAttribute& e, int to_step) {
+    const auto C0 = static_cast<std::int32_t>(c.at_corner), Cc = static_cast<std::int32_t>(c.per_column),
+               Cr = static_cast<std::int32_t>(c.per_row);
     const auto e0 = static_cast<std::int32_t>(e.at_corner), ec = static_cast<std::int32_t>(e.per_column),
                er = static_cast<std::int32_t>(e.per_row);
     const int down = 30 - to_step;  // to_step <= 24
@@ -304,16 +323,41 @@ struct QuadraticAttribute {
     // (x e) in the step scale: the low word of the product >> down, 6 <= down <= 30.
     auto product = [&](std::int64_t p) { return fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(p), down); };
     constexpr auto mul = fixedpoint::mul_s32_setup;  // exact 32 x 32 products; no __muldi3 on M0+
+    // Six products, not nine: a cross term x y' + x' y is (x + x')(y + y') - x y - x' y'. The sums
+    // fit 32 bits: C0 + Cc and C0 + Cr are C at a point of the box (|C| < 2^30.7 there), Cc + Cr
+    // twice a step (64 steps span the box: |step| < 2^25.7); e likewise (|e| < 2^30.6 over the box).
+    const std::int64_t p00 = mul(C0, e0), pcc = mul(Cc, ec), prr = mul(Cr, er);
     QuadraticAttribute q{};
-    q.q00 = base + up(a.at_corner + b.at_corner) - product(mul(A0, e0));
-    q.q10 = up(a.per_column + b.per_column) - product(mul(Ac, e0) + mul(A0, ec));
-    q.q01 = up(a.per_row + b.per_row) - product(mul(Ar, e0) + mul(A0, er));
-    q.q20 = 0u - product(mul(Ac, ec));
-    q.q11 = 0u - product(mul(Ac, er) + mul(Ar, ec));
-    q.q02 = 0u - product(mul(Ar, er));
+    q.q00 = base + up(c.at_corner) - product(p00);
+    q.q10 = up(c.per_column) - product(mul(C0 + Cc, e0 + ec) - p00 - pcc);
+    q.q01 = up(c.per_row) - product(mul(C0 + Cr, e0 + er) - p00 - prr);
+    q.q20 = 0u - product(pcc);
+    q.q11 = 0u - product(mul(Cc + Cr, ec + er) - pcc - prr);
+    q.q02 = 0u - product(prr);
     return q;
   }
 };
+
+// A coordinate's quadratic over the small triangle t: u_0 + offset in the step scale (`base`,
+// 2^shift units an exact unit), d1 and d2 the differences u_k - u_0 of the vertices in setup
+// slots 1 and 2 (|d| <= D, the uv range, in exact units) with their weights' e1, e2 (Q0.30),
+// and e the weights' plane over the box (SmallTriangle::affine of the e_i, shift 0). C is
+// carried in exact units * 2^extra, extra = min(shift, 26 - bit length of D): over the box the
+// barycentrics stay within [-12, 12], so |C| <= 24 (1 + 1/32) D 2^extra < 2^30.7 fits 32 bits.
+constexpr QuadraticAttribute perspective_quadratic(const SmallTriangle& t, std::uint32_t base, int shift,
+                                                   std::int32_t range, std::int32_t d1, std::int32_t e1,
+                                                   std::int32_t d2, std::int32_t e2, const AffineAttribute& e) {
+  const int extra_room = 26 - fixedpoint::bit_length32(static_cast<std::uint32_t>(range));
+  const int extra = extra_room < shift ? extra_room : shift;
+  // d (1 + e_k) 2^extra: |d 2^extra| < 2^26, and the product's floor (its low word: it fits) is
+  // within one unit.
+  auto weighted = [&](std::int32_t d, std::int32_t e_k) {
+    const auto product = static_cast<std::uint64_t>(fixedpoint::mul_s32_setup(d, e_k));
+    return static_cast<std::int32_t>(static_cast<std::uint32_t>(d) * (1u << extra) +
+                                     fixedpoint::low_word_shifted_right(product, 30 - extra));
+  };
+  return QuadraticAttribute::of(base, t.affine(0, weighted(d1, e1), weighted(d2, e2), 0), e, shift - extra);
+}
 
 // A quadratic attribute walked down the rows: at column 0 of the current row its
 // value and per-row change, and its per-column slope there.

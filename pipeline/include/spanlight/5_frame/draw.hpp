@@ -106,19 +106,12 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
   } else {
     const AffineAttribute e = t.affine(weights.e[i0], weights.e[i1] - weights.e[i0], weights.e[i2] - weights.e[i0], 0);
     const auto r0 = static_cast<std::uint32_t>(first - t.row0);
-    // |A|, |B| <= 24 D 2^extra < 2^31 over the box (its barycentrics are within [-12, 12]).
-    const int extra_room = 26 - fixedpoint::bit_length(static_cast<std::uint64_t>(range));
     for (int c = 0; c < 2; ++c) {
-      const int shift = needs.uv_scale.shift[c];
-      const int extra = extra_room < shift ? extra_room : shift;
       auto at = [&](int k) { return object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)]; };
-      const std::int32_t d1 = at(i1) - at(i0), d2 = at(i2) - at(i0);
-      auto b = [&](std::int32_t d, int k) {  // (u_k - u_0) e_k in exact units * 2^extra
-        return static_cast<std::int32_t>(fixedpoint::mul_s32_setup(d, weights.e[k]) >> (30 - extra));
-      };
+      const int shift = needs.uv_scale.shift[c];
       const std::uint32_t base = static_cast<std::uint32_t>(at(i0) + needs.uv_scale.offset[c]) << shift;
-      uv[c].start(QuadraticAttribute::of(base, t.affine(0, d1, d2, extra), t.affine(0, b(d1, i1), b(d2, i2), 0), e,
-                                         shift - extra),
+      uv[c].start(perspective_quadratic(t, base, shift, range, at(i1) - at(i0), weights.e[i1], at(i2) - at(i0),
+                                        weights.e[i2], e),
                   r0);
     }
   }
@@ -182,6 +175,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     const Mat4Block* to_projector = matrices.projector_from_object + o * pc;
     if (object.vertex_count > 8 && object_beyond_a_plane(object.bounds, to_clip, guard)) continue;
     const bool small_allowed = small_path_allowed(scene, object, view);
+    // The small path's uv step scale, from the texture alone (the same in every pass, as the path's choice).
+    const int small_texel_bits = object.texture < 0 ? 32 : surface_of(object, scene.textures).scale.texel_bits;
     PixelRun<P> small_run{};  // draw_small's, zeroed once an object
     cache_vertices(object, to_clip, view.width, view.height, guard, cache);
 
@@ -262,11 +257,11 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
             }
             // Depth differences below 2^26 (Q0.32): the planes' rounding then stays below 2^26 * 130 * 2^-27 < 65 units.
             const bool depth_ok = z_lo >= small_depth_margin && z_hi <= z_limit - small_depth_margin && z_hi - z_lo < (1u << 26);
-            PerspectiveWeights weights{};
+            PerspectiveWeights weights;  // set and read only for a textured object (no zeroing: a memset call)
             const std::int32_t range = object.texture < 0 ? 0 : uv_range(object, index);
             const bool uv_ok = object.texture < 0 ||
                                (range < (1 << 26) && perspective_weights_of(corners, weights) &&
-                                quadratic_enough(weights, range, object.uv_frac_bits, knobs.tolerance_log2));
+                                quadratic_enough(weights, range, object.uv_frac_bits, small_texel_bits, knobs.tolerance_log2));
             if (depth_ok && uv_ok) {
               draw_small<P>(t, object, index, corners, weights, range, needs, view, small_run, kernel, hooks);
               continue;

@@ -48,17 +48,65 @@ inline constexpr bool has_long_multiply = false;  // no UMULL/SMULL
 inline constexpr bool has_long_multiply = true;
 #endif
 
+#if defined(__ARM_ARCH_6M__)
+// mul_u32_halves in Thumb-1, inline: five registers, the middle sum's carry through ADCS (GCC's
+// schedule of the C above keeps more values alive and spills in the loops that call it).
+[[gnu::always_inline]] inline std::uint64_t mul_u32_thumb1(std::uint32_t a, std::uint32_t b) {
+  std::uint32_t al, bl, lo;
+  __asm__(
+      ".syntax unified\n\t"  // GCC hands Thumb-1 inline assembly over in divided syntax
+      "uxth  %[al], %[a]\n\t"
+      "lsrs  %[a], %[a], #16\n\t"
+      "uxth  %[bl], %[b]\n\t"
+      "lsrs  %[b], %[b], #16\n\t"
+      "movs  %[lo], %[al]\n\t"
+      "muls  %[lo], %[bl], %[lo]\n\t"  // ll
+      "muls  %[al], %[b], %[al]\n\t"   // lh
+      "muls  %[bl], %[a], %[bl]\n\t"   // hl
+      "muls  %[a], %[b], %[a]\n\t"     // hh
+      "movs  %[b], #0\n\t"
+      "adds  %[al], %[al], %[bl]\n\t"  // mid, its carry out
+      "adcs  %[b], %[b]\n\t"
+      "lsls  %[b], %[b], #16\n\t"
+      "adds  %[a], %[a], %[b]\n\t"
+      "lsls  %[bl], %[al], #16\n\t"
+      "lsrs  %[al], %[al], #16\n\t"
+      "adds  %[lo], %[lo], %[bl]\n\t"
+      "adcs  %[a], %[al]\n\t"
+      ".syntax divided\n\t"
+      : [a] "+l"(a), [b] "+l"(b), [al] "=&l"(al), [bl] "=&l"(bl), [lo] "=&l"(lo)
+      :
+      : "cc");
+  return (std::uint64_t{a} << 32) | lo;
+}
+#endif
+
 [[gnu::always_inline]] constexpr std::uint64_t mul_u32(std::uint32_t a, std::uint32_t b) {
-  if constexpr (has_long_multiply) return std::uint64_t{a} * b;
-  else return mul_u32_halves(a, b);
+  if constexpr (has_long_multiply) {
+    return std::uint64_t{a} * b;
+  } else {
+#if defined(__ARM_ARCH_6M__)
+    if (!std::is_constant_evaluated()) return mul_u32_thumb1(a, b);
+#endif
+    return mul_u32_halves(a, b);
+  }
 }
 [[gnu::always_inline]] constexpr std::int64_t mul_s32(std::int32_t a, std::int32_t b) {
-  if constexpr (has_long_multiply) return std::int64_t{a} * b;
-  else return mul_s32_halves(a, b);
+  if constexpr (has_long_multiply) {
+    return std::int64_t{a} * b;
+  } else {  // mul_s32_halves' correction on mul_u32
+    const auto ua = static_cast<std::uint32_t>(a), ub = static_cast<std::uint32_t>(b);
+    const std::uint32_t correction = (a < 0 ? ub : 0u) + (b < 0 ? ua : 0u);
+    return static_cast<std::int64_t>(mul_u32(ua, ub) - (std::uint64_t{correction} << 32));
+  }
 }
 [[gnu::always_inline]] constexpr std::int64_t mul_s32_u32(std::int32_t a, std::uint32_t b) {
-  if constexpr (has_long_multiply) return std::int64_t{a} * b;
-  else return mul_s32_u32_halves(a, b);
+  if constexpr (has_long_multiply) {
+    return std::int64_t{a} * b;
+  } else {
+    const auto ua = static_cast<std::uint32_t>(a);
+    return static_cast<std::int64_t>(mul_u32(ua, b) - (std::uint64_t{a < 0 ? b : 0u} << 32));
+  }
 }
 
 // The same product for code that runs per triangle or per vertex, not per

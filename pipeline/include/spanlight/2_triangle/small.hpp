@@ -323,9 +323,13 @@ struct QuadraticAttribute {
     // (x e) in the step scale: the low word of the product >> down, 6 <= down <= 30.
     auto product = [&](std::int64_t p) { return fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(p), down); };
     constexpr auto mul = fixedpoint::mul_s32_setup;  // exact 32 x 32 products; no __muldi3 on M0+
-    // Six products, not nine: a cross term x y' + x' y is (x + x')(y + y') - x y - x' y'. The sums
-    // fit 32 bits: C0 + Cc and C0 + Cr are C at a point of the box (|C| < 2^30.7 there), Cc + Cr
-    // twice a step (64 steps span the box: |step| < 2^25.7); e likewise (|e| < 2^30.6 over the box).
+    // Six products, not nine: a cross term x y' + x' y is (x + x')(y + y') - x y - x' y'.
+    // C0 + Cc and C0 + Cr are C at a point of the box (|C| < 2^30.7 there; e < 2^30.6). Cc + Cr:
+    // the sliver test bounds a barycentric's |column step| columns + |row step| rows by 24, so
+    // |Cc| + |Cr| <= 48 (1 + eps) D 2^extra, below 2^31.6 only: not proven to fit 32 bits (nor are
+    // the steps themselves, here and in the nine-product form). A search of 37,000 spike triangles
+    // that pass the sliver test found at most 2^30.2. Open: one bit less of `extra` and e in Q0.29
+    // would prove it (they change bytes).
     const std::int64_t p00 = mul(C0, e0), pcc = mul(Cc, ec), prr = mul(Cr, er);
     QuadraticAttribute q{};
     q.q00 = base + up(c.at_corner) - product(p00);

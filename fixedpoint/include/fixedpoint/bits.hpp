@@ -30,16 +30,20 @@ constexpr int bit_length(std::uint64_t x) { return x == 0 ? 0 : 64 - clz64(x); }
 }
 
 // Two's complement: a = ua - 2^32 [a < 0], so a * b = ua * ub - 2^32 (ub [a < 0] + ua [b < 0])
-// modulo 2^64, and the true product fits int64.
+// modulo 2^64, and the true product fits int64. Only the correction's value mod 2^32 matters.
+[[gnu::always_inline]] constexpr std::uint32_t sign_correction(std::int32_t a, std::int32_t b) {
+  return (a < 0 ? static_cast<std::uint32_t>(b) : 0u) + (b < 0 ? static_cast<std::uint32_t>(a) : 0u);
+}
+[[gnu::always_inline]] constexpr std::int64_t signed_from_unsigned(std::uint64_t unsigned_product, std::uint32_t correction) {
+  return static_cast<std::int64_t>(unsigned_product - (std::uint64_t{correction} << 32));
+}
+
 [[gnu::always_inline]] constexpr std::int64_t mul_s32_halves(std::int32_t a, std::int32_t b) {
-  const auto ua = static_cast<std::uint32_t>(a), ub = static_cast<std::uint32_t>(b);
-  const std::uint32_t correction = (a < 0 ? ub : 0u) + (b < 0 ? ua : 0u);  // only its value mod 2^32 matters
-  return static_cast<std::int64_t>(mul_u32_halves(ua, ub) - (std::uint64_t{correction} << 32));
+  return signed_from_unsigned(mul_u32_halves(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)), sign_correction(a, b));
 }
 
 [[gnu::always_inline]] constexpr std::int64_t mul_s32_u32_halves(std::int32_t a, std::uint32_t b) {
-  const auto ua = static_cast<std::uint32_t>(a);
-  return static_cast<std::int64_t>(mul_u32_halves(ua, b) - (std::uint64_t{a < 0 ? b : 0u} << 32));
+  return signed_from_unsigned(mul_u32_halves(static_cast<std::uint32_t>(a), b), a < 0 ? b : 0u);
 }
 
 #if defined(__ARM_ARCH_6M__)
@@ -94,18 +98,15 @@ inline constexpr bool has_long_multiply = true;
 [[gnu::always_inline]] constexpr std::int64_t mul_s32(std::int32_t a, std::int32_t b) {
   if constexpr (has_long_multiply) {
     return std::int64_t{a} * b;
-  } else {  // mul_s32_halves' correction on mul_u32
-    const auto ua = static_cast<std::uint32_t>(a), ub = static_cast<std::uint32_t>(b);
-    const std::uint32_t correction = (a < 0 ? ub : 0u) + (b < 0 ? ua : 0u);
-    return static_cast<std::int64_t>(mul_u32(ua, ub) - (std::uint64_t{correction} << 32));
+  } else {
+    return signed_from_unsigned(mul_u32(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b)), sign_correction(a, b));
   }
 }
 [[gnu::always_inline]] constexpr std::int64_t mul_s32_u32(std::int32_t a, std::uint32_t b) {
   if constexpr (has_long_multiply) {
     return std::int64_t{a} * b;
   } else {
-    const auto ua = static_cast<std::uint32_t>(a);
-    return static_cast<std::int64_t>(mul_u32(ua, b) - (std::uint64_t{a < 0 ? b : 0u} << 32));
+    return signed_from_unsigned(mul_u32(static_cast<std::uint32_t>(a), b), a < 0 ? b : 0u);
   }
 }
 
@@ -155,9 +156,6 @@ inline constexpr bool has_long_multiply = true;
   return static_cast<std::int64_t>((std::uint64_t{hi} << 32) | lo);
 }
 #endif
-[[gnu::noinline]] constexpr std::int64_t mul_s32_halves_outlined(std::int32_t a, std::int32_t b) {
-  return mul_s32_halves(a, b);
-}
 [[gnu::always_inline]] constexpr std::int64_t mul_s32_setup(std::int32_t a, std::int32_t b) {
   if constexpr (has_long_multiply) {
     return std::int64_t{a} * b;
@@ -165,7 +163,7 @@ inline constexpr bool has_long_multiply = true;
 #if defined(__ARM_ARCH_6M__)
     if (!std::is_constant_evaluated()) return mul_s32_thumb1(a, b);
 #endif
-    return mul_s32_halves_outlined(a, b);
+    return mul_s32_halves(a, b);  // reached in constant evaluation only
   }
 }
 

@@ -283,7 +283,7 @@ QuadraticErrors quadratic_errors(int tolerance_log2) {
     ++r.triangles;
     // As draw_small: e's plane, then one quadratic a coordinate, from the first row.
     const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
-    const spanlight::AffineAttribute e = t.affine(w.e[i0], w.e[i1] - w.e[i0], w.e[i2] - w.e[i0], 0);
+    const spanlight::AffineAttribute e = t.affine(w.e[i0] >> 1, (w.e[i1] >> 1) - (w.e[i0] >> 1), (w.e[i2] >> 1) - (w.e[i0] >> 1), 0);
     spanlight::QuadraticRows rows[2];
     for (int c = 0; c < 2; ++c) {
       const auto base = static_cast<std::uint32_t>(uv[i0][c]) << shift;

@@ -284,8 +284,8 @@ constexpr bool perspective_weights_of(const ScreenVertex (&v)[3], PerspectiveWei
 // triangle covers, D = uv_range in texels * 2^frac and 2^texel_bits step units a texel:
 //   its own error (above)                            < 1.07 D eps^2,
 //   the planes' rounding (SmallTriangle::affine)     moves C by (|d1| + |d2|)(1 + eps) 130 * 2^-27
-//                                                    < D 2^-18.9, and C e by |C| 130 * 2^-30 < D 2^-22.9,
-//   the floors of d (1 + e_k) 2^extra                < 2^-extra <= max(D 2^-25, one step unit),
+//                                                    < D 2^-18.9, and C e by |C| 130 * 2^-29 < D 2^-21.9,
+//   the floors of d (1 + e_k) 2^extra                < 2^-extra <= max(D 2^-24, one step unit),
 //   the coefficients' floors (QuadraticAttribute)    < 3 * 65^2 + 2 * 65 + 1 < 2^14 - 1 step units,
 // so 1.125 D eps^2 + D 2^-18 <= 2^-T - 2^(14 - texel_bits) texel is enough.
 constexpr bool quadratic_enough(const PerspectiveWeights& w, std::int32_t uv_range, int frac, int texel_bits,
@@ -306,30 +306,28 @@ constexpr bool quadratic_enough(const PerspectiveWeights& w, std::int32_t uv_ran
 // repeating texture's coordinate does):
 //   q = q00 + q10 c + q01 r + q20 c^2 + q11 c r + q02 r^2,
 // from q = u_0 + C (1 - e) with C and e affine (each product of C's terms and
-// e's is /2^30). The coefficients are floored in the step scale (one unit each),
+// e's is /2^29). The coefficients are floored in the step scale (one unit each),
 // so at column c and row r <= 65 of the box they add less than
 // 1 + c + r + c^2 + c r + r^2 < 2^14 units (quadratic_enough counts them).
 struct QuadraticAttribute {
   std::uint32_t q00, q10, q01, q20, q11, q02;
 
-  // From the affine C (exact units * 2^extra) and e (Q0.30), u_0 in the step scale, to_step = shift - extra.
+  // From the affine C (exact units * 2^extra) and e (Q0.29), u_0 in the step scale, to_step = shift - extra.
   static constexpr QuadraticAttribute of(std::uint32_t base, const AffineAttribute& c, const AffineAttribute& e, int to_step) {
     const auto C0 = static_cast<std::int32_t>(c.at_corner), Cc = static_cast<std::int32_t>(c.per_column),
                Cr = static_cast<std::int32_t>(c.per_row);
     const auto e0 = static_cast<std::int32_t>(e.at_corner), ec = static_cast<std::int32_t>(e.per_column),
                er = static_cast<std::int32_t>(e.per_row);
-    const int down = 30 - to_step;  // to_step <= 24
+    const int down = 29 - to_step;  // e in Q0.29; to_step <= 24
     auto up = [&](std::uint32_t x) { return x << to_step; };
-    // (x e) in the step scale: the low word of the product >> down, 6 <= down <= 30.
+    // (x e) in the step scale: the low word of the product >> down, 5 <= down <= 29.
     auto product = [&](std::int64_t p) { return fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(p), down); };
     constexpr auto mul = fixedpoint::mul_s32_setup;  // exact 32 x 32 products; no __muldi3 on M0+
     // Six products, not nine: a cross term x y' + x' y is (x + x')(y + y') - x y - x' y'.
-    // C0 + Cc and C0 + Cr are C at a point of the box (|C| < 2^30.7 there; e < 2^30.6). Cc + Cr:
-    // the sliver test bounds a barycentric's |column step| columns + |row step| rows by 24, so
-    // |Cc| + |Cr| <= 48 (1 + eps) D 2^extra, below 2^31.6 only: not proven to fit 32 bits (nor are
-    // the steps themselves, here and in the nine-product form). A search of 37,000 spike triangles
-    // that pass the sliver test found at most 2^30.2. Open: one bit less of `extra` and e in Q0.29
-    // would prove it (they change bytes).
+    // Every sum fits 32 bits. The sliver test bounds each barycentric's |column step| columns +
+    // |row step| rows by 24 (columns, rows >= 1), so with |d (1 + e_k)| 2^extra < 2^25.05 and
+    // |e_i| <= 2^24 (Q0.29): |Cc| + |Cr| <= 48 * 2^25.05 < 2^30.6 and |ec| + |er| <= 3 * 2^24 * 24
+    // < 2^30.2; C0 + Cc and C0 + Cr are C at a point of the box (|C| < 2^29.7), e likewise (< 2^29.2).
     const std::int64_t p00 = mul(C0, e0), pcc = mul(Cc, ec), prr = mul(Cr, er);
     QuadraticAttribute q{};
     q.q00 = base + up(c.at_corner) - product(p00);
@@ -345,13 +343,14 @@ struct QuadraticAttribute {
 // A coordinate's quadratic over the small triangle t: u_0 + offset in the step scale (`base`,
 // 2^shift units an exact unit), d1 and d2 the differences u_k - u_0 of the vertices in setup
 // slots 1 and 2 (|d| <= D, the uv range, in exact units) with their weights' e1, e2 (Q0.30),
-// and e the weights' plane over the box (SmallTriangle::affine of the e_i, shift 0). C is
-// carried in exact units * 2^extra, extra = min(shift, 26 - bit length of D): over the box the
-// barycentrics stay within [-12, 12], so |C| <= 24 (1 + 1/32) D 2^extra < 2^30.7 fits 32 bits.
+// and e the weights' plane over the box (SmallTriangle::affine of the e_i / 2, Q0.29, shift 0).
+// C is carried in exact units * 2^extra, extra = min(shift, 25 - bit length of D): over the box
+// the barycentrics stay within [-12, 12], so |C| <= 24 (1 + 1/32) D 2^extra < 2^29.7, and its
+// steps fit 32 bits with the room QuadraticAttribute::of needs.
 constexpr QuadraticAttribute perspective_quadratic(const SmallTriangle& t, std::uint32_t base, int shift,
                                                    std::int32_t range, std::int32_t d1, std::int32_t e1,
                                                    std::int32_t d2, std::int32_t e2, const AffineAttribute& e) {
-  const int extra_room = 26 - fixedpoint::bit_length32(static_cast<std::uint32_t>(range));
+  const int extra_room = 25 - fixedpoint::bit_length32(static_cast<std::uint32_t>(range));
   const int extra = extra_room < shift ? extra_room : shift;
   // d (1 + e_k) 2^extra: |d 2^extra| < 2^26, and the product's floor (its low word: it fits) is
   // within one unit.

@@ -104,7 +104,8 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
   if (!needs.uv) {
     uv[0] = uv[1] = QuadraticRows{};  // never read; set so that no path leaves them undefined
   } else {
-    const AffineAttribute e = t.affine(weights.e[i0], weights.e[i1] - weights.e[i0], weights.e[i2] - weights.e[i0], 0);
+    const std::int32_t e0 = weights.e[i0] >> 1, e1 = weights.e[i1] >> 1, e2 = weights.e[i2] >> 1;  // Q0.29
+    const AffineAttribute e = t.affine(e0, e1 - e0, e2 - e0, 0);
     const auto r0 = static_cast<std::uint32_t>(first - t.row0);
     for (int c = 0; c < 2; ++c) {
       auto at = [&](int k) { return object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)]; };

@@ -52,26 +52,52 @@ struct BilinearSums {
   std::uint32_t g;           // sum g_ij w_ij, < 2^24
 };
 
-[[gnu::always_inline]] inline BilinearSums bilinear_sums(std::uint32_t t00, std::uint32_t t10, std::uint32_t t01,
-                                                         std::uint32_t t11, std::uint32_t fx, std::uint32_t fy) {
-  using fixedpoint::bytes_0_2, fixedpoint::bytes_1_3;
-  const std::uint32_t ifx = 256u - fx, ify = 256u - fy;
-  const std::uint32_t h_top = bytes_0_2(t00) * ifx + bytes_0_2(t10) * fx;
-  const std::uint32_t h_bottom = bytes_0_2(t01) * ifx + bytes_0_2(t11) * fx;
-  const std::uint32_t a = bytes_1_3(h_top) * ify + bytes_1_3(h_bottom) * fy;
-  const std::uint32_t b = bytes_0_2(h_top) * ify + bytes_0_2(h_bottom) * fy;
+// The horizontal weights of a footprint: 256 - fx and fx, and (with lane instructions) both in one word.
+struct RowWeights {
+  std::uint32_t ifx, fx;
+#if FIXEDPOINT_HAS_DSP
+  std::uint32_t pair;  // ifx | fx << 16
+#endif
+};
+[[gnu::always_inline]] inline RowWeights row_weights(std::uint32_t fx) {
+#if FIXEDPOINT_HAS_DSP
+  return {256u - fx, fx, (256u - fx) | (fx << 16)};
+#else
+  return {256u - fx, fx};
+#endif
+}
+
+// One row of the footprint blended: h = c0 (256 - fx) + c1 fx, red and blue in their lanes, green alone.
+// A row at a time, so that only two texels are live at once (on ARMv6-M the four spill).
+struct RowBlend {
+  std::uint32_t rb, g;  // each lane < 2^16; g < 2^16
+};
+[[gnu::always_inline]] inline RowBlend row_blend(std::uint32_t t0, std::uint32_t t1, const RowWeights& w) {
+  using fixedpoint::bytes_0_2;
+  const std::uint32_t rb = bytes_0_2(t0) * w.ifx + bytes_0_2(t1) * w.fx;
 #if FIXEDPOINT_HAS_DSP
   // Both greens in one register's lanes, then one dual multiply-add (uxtb16, uxtab16, smuad).
-  const std::uint32_t weights = ifx | (fx << 16);
-  const std::uint32_t g_top = fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t00, t10), weights);
-  const std::uint32_t g_bottom = fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t01, t11), weights);
+  return {rb, fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t0, t1), w.pair)};
 #else
   // Without lane instructions green is weighted where it sits: (g << 8) w < 2^24, and both
-  // terms are multiples of 256, so the shift gives g00 ifx + g10 fx exactly, the same sum.
-  const std::uint32_t g_top = ((t00 & 0xFF00u) * ifx + (t10 & 0xFF00u) * fx) >> 8;
-  const std::uint32_t g_bottom = ((t01 & 0xFF00u) * ifx + (t11 & 0xFF00u) * fx) >> 8;
+  // terms are multiples of 256, so the shift gives g0 ifx + g1 fx exactly, the same sum.
+  return {rb, ((t0 & 0xFF00u) * w.ifx + (t1 & 0xFF00u) * w.fx) >> 8};
 #endif
-  return {a, b, g_top * ify + g_bottom * fy};
+}
+
+// The vertical blend of the two rows.
+[[gnu::always_inline]] inline BilinearSums column_blend(const RowBlend& top, const RowBlend& bottom, std::uint32_t fy) {
+  using fixedpoint::bytes_0_2, fixedpoint::bytes_1_3;
+  const std::uint32_t ify = 256u - fy;
+  const std::uint32_t a = bytes_1_3(top.rb) * ify + bytes_1_3(bottom.rb) * fy;
+  const std::uint32_t b = bytes_0_2(top.rb) * ify + bytes_0_2(bottom.rb) * fy;
+  return {a, b, top.g * ify + bottom.g * fy};
+}
+
+[[gnu::always_inline]] inline BilinearSums bilinear_sums(std::uint32_t t00, std::uint32_t t10, std::uint32_t t01,
+                                                         std::uint32_t t11, std::uint32_t fx, std::uint32_t fy) {
+  const RowWeights w = row_weights(fx);
+  return column_blend(row_blend(t00, t10, w), row_blend(t01, t11, w), fy);
 }
 
 [[gnu::always_inline]] inline Colour round_sums(const BilinearSums& s) {
@@ -94,7 +120,10 @@ struct Footprint {
 };
 
 [[gnu::always_inline]] inline BilinearSums footprint_sums(const Footprint& f, std::int32_t stride) {
-  return bilinear_sums(f.p[0], f.p[1], f.p[stride], f.p[stride + 1], f.fx, f.fy);
+  const RowWeights w = row_weights(f.fx);
+  const RowBlend top = row_blend(f.p[0], f.p[1], w);
+  const RowBlend bottom = row_blend(f.p[stride], f.p[stride + 1], w);
+  return column_blend(top, bottom, f.fy);
 }
 
 // Repeating: x0 is the top bits, the weight the next 8 (x_shift >= 20 for sizes up to 4096).

@@ -34,8 +34,11 @@ constexpr int bit_length(std::uint64_t x) { return x == 0 ? 0 : 64 - clz64(x); }
 [[gnu::always_inline]] constexpr std::uint32_t sign_correction(std::int32_t a, std::int32_t b) {
   return (a < 0 ? static_cast<std::uint32_t>(b) : 0u) + (b < 0 ? static_cast<std::uint32_t>(a) : 0u);
 }
+// The correction touches the high word only: subtracted there, the low word is left as it is
+// (written word by word, so ARMv6-M code does no 64-bit subtraction).
 [[gnu::always_inline]] constexpr std::int64_t signed_from_unsigned(std::uint64_t unsigned_product, std::uint32_t correction) {
-  return static_cast<std::int64_t>(unsigned_product - (std::uint64_t{correction} << 32));
+  const auto lo = static_cast<std::uint32_t>(unsigned_product), hi = static_cast<std::uint32_t>(unsigned_product >> 32) - correction;
+  return static_cast<std::int64_t>((std::uint64_t{hi} << 32) | lo);
 }
 
 [[gnu::always_inline]] constexpr std::int64_t mul_s32_halves(std::int32_t a, std::int32_t b) {
@@ -173,28 +176,22 @@ inline constexpr bool has_long_multiply = true;
   else return (std::uint64_t{(a >> 16) * b} << 16) + (a & 0xFFFFu) * b;  // each product < 2^32
 }
 
-// x * g for 0 <= g < 2^16 when the product fits int64, without __muldi3 on ARMv6-M: the
-// high word's product and the low word's (32 x 16) add up to it modulo 2^64.
-[[gnu::always_inline]] constexpr std::int64_t mul_s64_u16(std::int64_t x, std::uint32_t g) {
+// x * g when the product fits int64, without __muldi3 on ARMv6-M: the low word's product (by
+// low_product, exact) plus the high word's, which adds to the high word only.
+template <std::uint64_t (*low_product)(std::uint32_t, std::uint32_t)>
+[[gnu::always_inline]] constexpr std::int64_t mul_s64_by_word(std::int64_t x, std::uint32_t g) {
   if constexpr (has_long_multiply) {
     return x * static_cast<std::int64_t>(g);
   } else {
     const auto u = static_cast<std::uint64_t>(x);
-    const auto hi = static_cast<std::uint32_t>(u >> 32), lo = static_cast<std::uint32_t>(u);
-    return static_cast<std::int64_t>((std::uint64_t{hi * g} << 32) + mul_u32_u16(lo, g));
+    const std::uint64_t low = low_product(static_cast<std::uint32_t>(u), g);
+    const std::uint32_t hi = static_cast<std::uint32_t>(low >> 32) + static_cast<std::uint32_t>(u >> 32) * g;
+    return static_cast<std::int64_t>((std::uint64_t{hi} << 32) | static_cast<std::uint32_t>(low));
   }
 }
-
-// x * g for any g < 2^32 when the product fits int64: the same split, with a 32 x 32 low product.
-[[gnu::always_inline]] constexpr std::int64_t mul_s64_u32(std::int64_t x, std::uint32_t g) {
-  if constexpr (has_long_multiply) {
-    return x * static_cast<std::int64_t>(g);
-  } else {
-    const auto u = static_cast<std::uint64_t>(x);
-    const auto hi = static_cast<std::uint32_t>(u >> 32), lo = static_cast<std::uint32_t>(u);
-    return static_cast<std::int64_t>((std::uint64_t{hi * g} << 32) + mul_u32(lo, g));
-  }
-}
+// For 0 <= g < 2^16 (a 32 x 16 low product), and for any g < 2^32.
+[[gnu::always_inline]] constexpr std::int64_t mul_s64_u16(std::int64_t x, std::uint32_t g) { return mul_s64_by_word<mul_u32_u16>(x, g); }
+[[gnu::always_inline]] constexpr std::int64_t mul_s64_u32(std::int64_t x, std::uint32_t g) { return mul_s64_by_word<mul_u32>(x, g); }
 
 // floor(a * b / 2^s) for any int64 a, |b| < 2^31 and 0 <= s <= 32, without
 // the 96-bit product overflowing: split a into hi*2^32 + lo (lo unsigned).

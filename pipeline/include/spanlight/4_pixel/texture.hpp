@@ -68,7 +68,8 @@ struct RowWeights {
 }
 
 // One row of the footprint blended: h = c0 (256 - fx) + c1 fx, red and blue in their lanes, green alone.
-// A row at a time, so that only two texels are live at once (on ARMv6-M the four spill).
+// A row at a time, so the top row's texels may die before the bottom row's are loaded (with 8 low
+// registers, ARMv6-M code spills what stays live).
 struct RowBlend {
   std::uint32_t rb, g;  // each lane < 2^16; g < 2^16
 };

@@ -246,7 +246,11 @@ TEST_CASE("a repeating texture one texel wide or high is baked two wide or high 
   // log2 1 = 0 would shift by 32, so prepare bakes it doubled (repeatable_image): 2xN, the two
   // columns the same, which every coordinate reads as the 1xN texture.
   spanlight::scene::Image image{1, 4, {}};
-  for (int row = 0; row < 4; ++row) image.rgb.insert(image.rgb.end(), {static_cast<std::uint8_t>(60 * row), 7, 9});
+  for (int row = 0; row < 4; ++row) {
+    image.rgb.push_back(static_cast<std::uint8_t>(60 * row));
+    image.rgb.push_back(7);
+    image.rgb.push_back(9);
+  }
   const spanlight::scene::Image baked = spanlight::prepare::repeatable_image(image);
   REQUIRE(baked.width == 2);
   REQUIRE(baked.height == 4);

@@ -47,7 +47,7 @@ TEST_CASE("SegmentPlanner's segments keep the quadratic through each segment's e
   for (int n = 0; n < spans; ++n) {
     const std::int32_t a = static_cast<std::int32_t>(random() % 3000), length = 1 + static_cast<std::int32_t>(random() % 2000);
     const std::int32_t b = a + length;
-    auto divisor = [&] { return static_cast<std::uint32_t>(std::ldexp(1.0, 16 + static_cast<int>(random() % 15)) * (1.0 + (random() % 1000) / 1000.0)); };
+    auto divisor = [&] { return static_cast<std::uint32_t>(std::ldexp(1.0, 16 + static_cast<int>(random() % 15)) * (1.0 + static_cast<double>(random() % 1000) / 1000.0)); };
     const std::uint32_t e_a = divisor(), e_b = divisor();
     const double F = std::ldexp(static_cast<double>(random() % 4096 + 1), -static_cast<int>(random() % 12)) * (random() % 2 ? 1 : -1);
     const auto delta8 = static_cast<std::uint64_t>(std::floor(std::fabs(F) * 256.0));  // as texel_delta8 (walk.hpp): floored

@@ -45,45 +45,27 @@ constexpr TexelGrid texel_grid(const TextureLevel& level, int frac) {
 //   S = 256 A + B,  A = sum hi(h) w_y,  B = sum lo(h) w_y,
 //   round(S / 2^16) = (A + floor(B / 256) + 128) >> 8,
 // and A + B/256 <= S/256 <= 255 * 256, so the lanes never carry into each other.
-// Green goes as a pair of lanes (its two texels of a row) through one dot
-// product with the weights, then blends vertically in one word (below 2^24).
+// Green blends in one word (below 2^24), its texels paired in lanes: a row's two
+// with lane instructions (one dot product), else a column's two (one blend for both rows).
 struct BilinearSums {
   std::uint32_t a_rb, b_rb;  // A and B above, red and blue lanes
   std::uint32_t g;           // sum g_ij w_ij, < 2^24
 };
 
-// The horizontal weights of a footprint: 256 - fx and fx, and (with lane instructions) both in one word.
+#if FIXEDPOINT_HAS_DSP
+// With lane instructions, a row at a time: h = c0 (256 - fx) + c1 fx, red and blue in their
+// lanes, the row's two greens as a pair through one dual multiply-add (uxtb16, uxtab16, smuad).
 struct RowWeights {
-  std::uint32_t ifx, fx;
-#if FIXEDPOINT_HAS_DSP
-  std::uint32_t pair;  // ifx | fx << 16
-#endif
+  std::uint32_t ifx, fx, pair;  // pair = ifx | fx << 16
 };
-[[gnu::always_inline]] inline RowWeights row_weights(std::uint32_t fx) {
-#if FIXEDPOINT_HAS_DSP
-  return {256u - fx, fx, (256u - fx) | (fx << 16)};
-#else
-  return {256u - fx, fx};
-#endif
-}
+[[gnu::always_inline]] inline RowWeights row_weights(std::uint32_t fx) { return {256u - fx, fx, (256u - fx) | (fx << 16)}; }
 
-// One row of the footprint blended: h = c0 (256 - fx) + c1 fx, red and blue in their lanes, green alone.
-// A row at a time, so the top row's texels may die before the bottom row's are loaded (with 8 low
-// registers, ARMv6-M code spills what stays live).
 struct RowBlend {
   std::uint32_t rb, g;  // each lane < 2^16; g < 2^16
 };
 [[gnu::always_inline]] inline RowBlend row_blend(std::uint32_t t0, std::uint32_t t1, const RowWeights& w) {
   using fixedpoint::bytes_0_2;
-  const std::uint32_t rb = bytes_0_2(t0) * w.ifx + bytes_0_2(t1) * w.fx;
-#if FIXEDPOINT_HAS_DSP
-  // Both greens in one register's lanes, then one dual multiply-add (uxtb16, uxtab16, smuad).
-  return {rb, fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t0, t1), w.pair)};
-#else
-  // Without lane instructions green is weighted where it sits: (g << 8) w < 2^24, and both
-  // terms are multiples of 256, so the shift gives g0 ifx + g1 fx exactly, the same sum.
-  return {rb, ((t0 & 0xFF00u) * w.ifx + (t1 & 0xFF00u) * w.fx) >> 8};
-#endif
+  return {bytes_0_2(t0) * w.ifx + bytes_0_2(t1) * w.fx, fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t0, t1), w.pair)};
 }
 
 // The vertical blend of the two rows.
@@ -100,6 +82,27 @@ struct RowBlend {
   const RowWeights w = row_weights(fx);
   return column_blend(row_blend(t00, t10, w), row_blend(t01, t11, w), fy);
 }
+#else
+// c0 (256 - f) + c1 f for lanes c0, c1 (0 <= f <= 256), as 256 c0 + (c1 - c0) f: one product.
+// A lane of c1 - c0 may borrow from the next, but every lane of the result lies in [0, 2^16)
+// (or one lane in [0, 2^24)), so the word modulo 2^32 is exactly the lanes' sums.
+[[gnu::always_inline]] constexpr std::uint32_t lerp_lanes(std::uint32_t c0, std::uint32_t c1, std::uint32_t f) {
+  return (c0 << 8) + (c1 - c0) * f;
+}
+
+// Without lane instructions (ARMv6-M, the host): the same sums with every blend on lanes of
+// 32-bit words. Red and blue of a row share a word; green travels as a vector over the two rows
+// ((t >> 8) | (t' << 8)) & 0x00FF00FF (top in lane 0, bottom in lane 1; byte 3 of a texel is
+// zero), so one horizontal blend serves both rows, and the vertical blend is its two lanes'.
+[[gnu::always_inline]] constexpr BilinearSums bilinear_sums(std::uint32_t t00, std::uint32_t t10, std::uint32_t t01,
+                                                            std::uint32_t t11, std::uint32_t fx, std::uint32_t fy) {
+  constexpr std::uint32_t m = 0x00FF00FFu;
+  const std::uint32_t rb_top = lerp_lanes(t00 & m, t10 & m, fx), rb_bottom = lerp_lanes(t01 & m, t11 & m, fx);
+  const std::uint32_t g_rows = lerp_lanes(((t00 >> 8) | (t01 << 8)) & m, ((t10 >> 8) | (t11 << 8)) & m, fx);
+  return {lerp_lanes((rb_top >> 8) & m, (rb_bottom >> 8) & m, fy), lerp_lanes(rb_top & m, rb_bottom & m, fy),
+          lerp_lanes(g_rows & 0xFFFFu, g_rows >> 16, fy)};
+}
+#endif
 
 [[gnu::always_inline]] inline Colour round_sums(const BilinearSums& s) {
   return {fixedpoint::bytes_1_3(fixedpoint::add_bytes_1_3(s.a_rb, s.b_rb) + 0x00800080u), (s.g + 0x8000u) >> 16};
@@ -121,10 +124,7 @@ struct Footprint {
 };
 
 [[gnu::always_inline]] inline BilinearSums footprint_sums(const Footprint& f, std::int32_t stride) {
-  const RowWeights w = row_weights(f.fx);
-  const RowBlend top = row_blend(f.p[0], f.p[1], w);
-  const RowBlend bottom = row_blend(f.p[stride], f.p[stride + 1], w);
-  return column_blend(top, bottom, f.fy);
+  return bilinear_sums(f.p[0], f.p[1], f.p[stride], f.p[stride + 1], f.fx, f.fy);
 }
 
 // Repeating: x0 is the top bits, the weight the next 8 (x_shift >= 20 for sizes up to 4096).

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 namespace spanlight {
 
@@ -24,5 +25,14 @@ struct NoHooks {
   template <typename Storage>
   static constexpr void band_done(std::uint16_t /*first_row*/, std::uint16_t /*rows*/, const Storage* /*colour*/) {}
 };
+
+// Whether H watches pixels (its own touched): else a pass may skip the call altogether.
+template <typename H>
+constexpr bool sees_pixels() {
+  using Plain = std::remove_cvref_t<H>;
+  if constexpr (requires { static_cast<void (*)(Pass, std::uint32_t)>(&Plain::touched); })
+    return static_cast<void (*)(Pass, std::uint32_t)>(&Plain::touched) != &NoHooks::touched;
+  else return true;
+}
 
 }  // namespace spanlight

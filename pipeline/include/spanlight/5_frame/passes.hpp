@@ -11,12 +11,14 @@
 #include <concepts>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 
 #include "spanlight/3_span/walk.hpp"
 #include "spanlight/4_pixel/colour.hpp"
 #include "spanlight/4_pixel/depth.hpp"
 #include "spanlight/4_pixel/light.hpp"
 #include "spanlight/4_pixel/surface.hpp"
+#include "spanlight/5_frame/thumb1_run.hpp"
 #include "spanlight/features.hpp"
 #include "spanlight/hooks.hpp"
 #include "spanlight/inline.hpp"
@@ -242,6 +244,11 @@ struct FusedKernel {
   void run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
     bool any_light = false;
     for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { any_light |= may_light(r, j, count); });
+#if defined(__ARM_ARCH_6M__)
+    if constexpr (thumb1_shape) {
+      if (!any_light && surface.kind == SurfaceKind::bilinear_repeat && !(F.tinted && surface.tinted)) return thumb1_run(i, count, r);
+    }
+#endif
     with_sampler<F>(surface, r.level, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
       if (!any_light) constant_light(i, count, r, sample);
       else lit(i, count, r, sample);
@@ -249,6 +256,25 @@ struct FusedKernel {
   }
 
  private:
+#if defined(__ARM_ARCH_6M__)
+  // The shape thumb1_run.hpp draws: 16-bit depth, RGB565, nothing watching the pixels.
+  static constexpr bool thumb1_shape = F.format == PixelFormat::rgb565 && F.depth_bits == 16 &&
+                                       std::is_same_v<DepthT, std::uint16_t> && F.bilinear && !sees_pixels<Hooks>();
+
+  // A run of a bilinear repeating texture under a constant light, in Thumb-1.
+  template <int PR>
+  void thumb1_run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
+    if (count <= 0) return;
+    const TexelGrid& g = surface.grid;
+    std::uint16_t* d = band.depth + i;
+    const auto colour_offset = static_cast<std::int32_t>(reinterpret_cast<std::uintptr_t>(band.color + i) - reinterpret_cast<std::uintptr_t>(d));
+    const Thumb1Run run{d, colour_offset, d + count, r.z, r.dz, r.u.value, r.u.step, r.u.curve, r.v.value, r.v.step, r.v.curve,
+                        g.texels, g.stride, static_cast<std::uint32_t>(g.x_shift - 8), static_cast<std::uint32_t>(g.y_shift - 8),
+                        red(ambient), blue(ambient), green(ambient), ambient != white};
+    thumb1_fused_bilinear_run(&run);
+  }
+#endif
+
   // No projector reaches the run: the light is the ambient all along.
   template <int PR, typename Sample>
   [[gnu::always_inline]] void constant_light(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r, Sample& sample) const {

@@ -257,21 +257,24 @@ struct FusedKernel {
 
  private:
 #if defined(__ARM_ARCH_6M__)
-  // The shape thumb1_run.hpp draws: 16-bit depth, RGB565, nothing watching the pixels.
-  static constexpr bool thumb1_shape = F.format == PixelFormat::rgb565 && F.depth_bits == 16 &&
-                                       std::is_same_v<DepthT, std::uint16_t> && F.bilinear && !sees_pixels<Hooks>();
+  // The shapes thumb1_run.hpp draws: 16- or 24-bit depth in halfwords or words, RGB565 or
+  // RGB888, nothing watching the pixels.
+  static constexpr bool thumb1_shape =
+      (F.format == PixelFormat::rgb565 || F.format == PixelFormat::rgb888) && F.bilinear && !sees_pixels<Hooks>() &&
+      ((F.depth_bits == 16 && std::is_same_v<DepthT, std::uint16_t>) || (F.depth_bits == 24 && std::is_same_v<DepthT, std::uint32_t>));
 
   // A run of a bilinear repeating texture under a constant light, in Thumb-1.
   template <int PR>
   void thumb1_run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
     if (count <= 0) return;
     const TexelGrid& g = surface.grid;
-    std::uint16_t* d = band.depth + i;
-    const auto colour_offset = static_cast<std::int32_t>(reinterpret_cast<std::uintptr_t>(band.color + i) - reinterpret_cast<std::uintptr_t>(d));
-    const Thumb1Run run{d, colour_offset, d + count, r.z, r.dz, r.u.value, r.u.step, r.u.curve, r.v.value, r.v.step, r.v.curve,
-                        g.texels, g.stride, static_cast<std::uint32_t>(g.x_shift - 8), static_cast<std::uint32_t>(g.y_shift - 8),
-                        red(ambient), blue(ambient), green(ambient), ambient != white};
-    thumb1_fused_bilinear_run(&run);
+    DepthT* d = band.depth + i;
+    auto colour = reinterpret_cast<std::uintptr_t>(band.color + i * Color::per_pixel);
+    if constexpr (F.depth_bits == 16 && F.format == PixelFormat::rgb565) colour -= reinterpret_cast<std::uintptr_t>(d);
+    const Thumb1Run run{d, colour, d + count, r.z, r.dz, r.u.value, r.u.step, r.u.curve,
+                        r.v.value, r.v.step, r.v.curve, g.texels, g.stride, static_cast<std::uint32_t>(g.x_shift - 8),
+                        static_cast<std::uint32_t>(g.y_shift - 8), red(ambient), blue(ambient), green(ambient), ambient != white};
+    thumb1_fused_bilinear_run<F.depth_bits, F.format>(&run);
   }
 #endif
 

@@ -1,24 +1,28 @@
 // Stage 5a on ARMv6-M (Cortex-M0/M0+): the fused pass's run for the commonest
-// shape written out in Thumb-1. A 16-bit depth buffer, RGB565, a bilinear
-// repeating texture, no projector reaching the run, the light constant: per
-// pixel the depth test, the footprint, the lane blend of texture.hpp, the
-// modulate of colour.hpp and pack565, the very operations of the C++ kernel in
-// the same order, so the bytes are the same (the firmware tests compare every
-// frame with the host's). GCC keeps the run's stepped values on the stack and
+// shape written out in Thumb-1. A bilinear repeating texture, no projector
+// reaching the run, the light constant; 16- or 24-bit depth (16- or 32-bit
+// words), RGB565 or RGB888. Per pixel the depth test, the footprint, the lane
+// blend of texture.hpp, the modulate of colour.hpp and the store (pack565),
+// the very operations of the C++ kernel in the same order, so the bytes are
+// the same (firmware.kernel_check compares the two on random runs, and the
+// firmware tests every frame with the host's). GCC keeps the run's stepped values on the stack and
 // loads, adds and stores each per pixel; here u, v, z and their steps live in
 // the high registers (one ADD each), and the blend's eight values fit the low ones.
 #pragma once
 
 #include <cstdint>
 
+#include "spanlight/knobs.hpp"  // PixelFormat
+
 namespace spanlight {
 
 // What the loop reads, word by word (the offsets are the assembly's).
 struct Thumb1Run {
-  std::uint16_t* depth;        //  0: the run's first pixel in the depth buffer
-  std::int32_t colour_offset;  //  4: bytes from a pixel's depth to its colour
-  std::uint16_t* depth_end;    //  8: one past the run's last pixel (the run has at least one)
-  std::uint32_t z;             // 12: Q0.32, stored as z >> 16
+  void* depth;                 //  0: the run's first pixel in the depth buffer
+  std::uintptr_t colour;       //  4: and in the colour buffer; for RGB565 over 16-bit depth
+                               //     the offset from a pixel's depth to its colour, in bytes
+  void* depth_end;             //  8: one past the run's last pixel (the run has at least one)
+  std::uint32_t z;             // 12: Q0.32, stored as z >> (32 - depth bits)
   std::int32_t dz;             // 16
   std::uint32_t u, du, ddu;    // 20, 24, 28: x in the sampler's scale (walk.hpp), stepped
   std::uint32_t v, dv, ddv;    // 32, 36, 40
@@ -30,227 +34,281 @@ struct Thumb1Run {
 };
 
 #if defined(__ARM_ARCH_6M__)
+// One loop, its depth and colour pieces filled in below (r0 = the run on entry).
 // The frame below the saved registers: the run copied (0..72), then the pixel's
 // spilled values (76 fy, 80 column 0's greens, 84 the greens' rows) and constants
 // (88 0x00FF00FF, 92 0x00800080, 96 0x03F603F6, 100 0x001F001F).
-[[gnu::naked, gnu::noinline]] inline void thumb1_fused_bilinear_run(const Thumb1Run* /*run*/) {
-  __asm__ volatile(
-      ".syntax unified\n\t"
-      "push  {r4-r7, lr}\n\t"
-      "mov   r4, r8\n\t"
-      "mov   r5, r9\n\t"
-      "mov   r6, r10\n\t"
-      "mov   r7, r11\n\t"
-      "push  {r4-r7}\n\t"
-      "sub   sp, #104\n\t"
-      "mov   r7, sp\n\t"
-      "ldmia r0!, {r1-r6}\n\t"
-      "stmia r7!, {r1-r6}\n\t"
-      "ldmia r0!, {r1-r6}\n\t"
-      "stmia r7!, {r1-r6}\n\t"
-      "ldmia r0!, {r1-r6}\n\t"
-      "stmia r7!, {r1-r6}\n\t"
-      "ldr   r1, [r0]\n\t"
-      "str   r1, [r7]\n\t"
-      "movs  r1, #255\n\t"
-      "lsls  r2, r1, #16\n\t"
-      "adds  r2, r2, r1\n\t"
-      "str   r2, [sp, #88]\n\t"  // 0x00FF00FF
-      "movs  r1, #128\n\t"
-      "lsls  r2, r1, #16\n\t"
-      "adds  r2, r2, r1\n\t"
-      "str   r2, [sp, #92]\n\t"  // 0x00800080
-      "movs  r1, #63\n\t"
-      "lsls  r1, r1, #4\n\t"
-      "adds  r1, #6\n\t"
-      "lsls  r2, r1, #16\n\t"
-      "adds  r2, r2, r1\n\t"
-      "str   r2, [sp, #96]\n\t"  // 0x03F603F6
-      "movs  r1, #31\n\t"
-      "lsls  r2, r1, #16\n\t"
-      "adds  r2, r2, r1\n\t"
-      "str   r2, [sp, #100]\n\t"  // 0x001F001F
-      "ldr   r1, [sp, #12]\n\t"
-      "mov   r12, r1\n\t"  // z
-      "ldr   r1, [sp, #16]\n\t"
-      "mov   lr, r1\n\t"  // dz
-      "ldr   r1, [sp, #20]\n\t"
-      "mov   r8, r1\n\t"  // u
-      "ldr   r1, [sp, #24]\n\t"
-      "mov   r9, r1\n\t"  // du
-      "ldr   r1, [sp, #32]\n\t"
-      "mov   r10, r1\n\t"  // v
-      "ldr   r1, [sp, #36]\n\t"
-      "mov   r11, r1\n\t"  // dv
-      "ldr   r7, [sp, #0]\n\t"
-      // ---- a pixel: r7 is its depth's address
-      "1:\n\t"
-      "mov   r0, r12\n\t"
-      "lsrs  r0, r0, #16\n\t"  // the stored depth
-      "ldrh  r1, [r7]\n\t"
-      "cmp   r0, r1\n\t"
-      "blo   4f\n\t"  // nearer: drawn below, then back to 3
-      // ---- the next pixel (a pixel not nearer stays)
-      "3:\n\t"
-      "add   r8, r9\n\t"
-      "ldr   r0, [sp, #28]\n\t"
-      "add   r9, r0\n\t"
-      "add   r10, r11\n\t"
-      "ldr   r0, [sp, #40]\n\t"
-      "add   r11, r0\n\t"
-      "add   r12, lr\n\t"
-      "adds  r7, #2\n\t"
-      "str   r7, [sp, #0]\n\t"
-      "ldr   r0, [sp, #8]\n\t"
-      "cmp   r7, r0\n\t"
-      "bne   1b\n\t"
-      "add   sp, #104\n\t"
-      "pop   {r4-r7}\n\t"
-      "mov   r8, r4\n\t"
-      "mov   r9, r5\n\t"
-      "mov   r10, r6\n\t"
-      "mov   r11, r7\n\t"
-      "pop   {r4-r7, pc}\n\t"
-      // ---- a pixel drawn
-      "4:\n\t"
-      "strh  r0, [r7]\n\t"
-      // The footprint: u >> x_down = x0 << 8 | fx, the same for v.
-      "mov   r2, r8\n\t"
-      "ldr   r3, [sp, #52]\n\t"
-      "lsrs  r2, r3\n\t"
-      "mov   r5, r10\n\t"
-      "ldr   r3, [sp, #56]\n\t"
-      "lsrs  r5, r3\n\t"
-      "lsrs  r6, r5, #8\n\t"  // y0
-      "uxtb  r5, r5\n\t"      // fy
-      "str   r5, [sp, #76]\n\t"
-      "ldr   r3, [sp, #48]\n\t"
-      "muls  r6, r3, r6\n\t"  // y0 * stride
-      "lsrs  r4, r2, #8\n\t"  // x0
-      "uxtb  r2, r2\n\t"      // fx
-      "adds  r6, r6, r4\n\t"
-      "lsls  r6, r6, #2\n\t"
-      "ldr   r4, [sp, #44]\n\t"
-      "adds  r6, r6, r4\n\t"  // &texel (x0, y0)
-      "lsls  r3, r3, #2\n\t"
-      "ldr   r0, [r6]\n\t"      // t00
-      "ldr   r1, [r6, #4]\n\t"  // t10
-      "adds  r6, r6, r3\n\t"
-      "ldr   r3, [r6]\n\t"      // t01
-      "ldr   r4, [r6, #4]\n\t"  // t11
-      "ldr   r6, [sp, #88]\n\t"  // m = 0x00FF00FF
-      // Green as a vector over the two rows, blended by fx: lerp_lanes(c0, c1, f) = (c0 << 8) + (c1 - c0) f.
-      "lsrs  r5, r0, #8\n\t"
-      "lsls  r7, r3, #8\n\t"
-      "orrs  r5, r7\n\t"
-      "ands  r5, r6\n\t"
-      "str   r5, [sp, #80]\n\t"
-      "lsrs  r5, r1, #8\n\t"
-      "lsls  r7, r4, #8\n\t"
-      "orrs  r5, r7\n\t"
-      "ands  r5, r6\n\t"
-      "ldr   r7, [sp, #80]\n\t"
-      "subs  r5, r5, r7\n\t"
-      "muls  r5, r2, r5\n\t"
-      "lsls  r7, r7, #8\n\t"
-      "adds  r5, r5, r7\n\t"
-      "str   r5, [sp, #84]\n\t"  // the greens' rows
-      // Red and blue of each row, blended by fx.
-      "ands  r0, r6\n\t"
-      "ands  r1, r6\n\t"
-      "subs  r1, r1, r0\n\t"
-      "muls  r1, r2, r1\n\t"
-      "lsls  r0, r0, #8\n\t"
-      "adds  r0, r0, r1\n\t"  // the top row
-      "ands  r3, r6\n\t"
-      "ands  r4, r6\n\t"
-      "subs  r4, r4, r3\n\t"
-      "muls  r4, r2, r4\n\t"
-      "lsls  r3, r3, #8\n\t"
-      "adds  r3, r3, r4\n\t"  // the bottom row
-      // The rows blended by fy, high bytes (A) and low bytes (B) apart.
-      "ldr   r7, [sp, #76]\n\t"
-      "lsrs  r1, r0, #8\n\t"
-      "ands  r1, r6\n\t"
-      "lsrs  r4, r3, #8\n\t"
-      "ands  r4, r6\n\t"
-      "subs  r4, r4, r1\n\t"
-      "muls  r4, r7, r4\n\t"
-      "lsls  r1, r1, #8\n\t"
-      "adds  r1, r1, r4\n\t"  // A
-      "ands  r0, r6\n\t"
-      "ands  r3, r6\n\t"
-      "subs  r3, r3, r0\n\t"
-      "muls  r3, r7, r3\n\t"
-      "lsls  r0, r0, #8\n\t"
-      "adds  r0, r0, r3\n\t"  // B
-      // round_sums: bytes_1_3(A + bytes_1_3(B) + 0x00800080).
-      "lsrs  r0, r0, #8\n\t"
-      "ands  r0, r6\n\t"
-      "adds  r0, r0, r1\n\t"
-      "ldr   r1, [sp, #92]\n\t"
-      "adds  r0, r0, r1\n\t"
-      "lsrs  r0, r0, #8\n\t"
-      "ands  r0, r6\n\t"  // red and blue
-      "ldr   r5, [sp, #84]\n\t"
-      "lsrs  r4, r5, #16\n\t"
-      "uxth  r5, r5\n\t"
-      "subs  r4, r4, r5\n\t"
-      "muls  r4, r7, r4\n\t"
-      "lsls  r5, r5, #8\n\t"
-      "adds  r5, r5, r4\n\t"
-      "movs  r4, #128\n\t"
-      "lsls  r4, r4, #8\n\t"
-      "adds  r5, r5, r4\n\t"
-      "lsrs  r5, r5, #16\n\t"  // green
-      // The light (colour.hpp, modulate), unless white.
-      "ldr   r4, [sp, #72]\n\t"
-      "cmp   r4, #0\n\t"
-      "beq   2f\n\t"
-      "uxth  r1, r0\n\t"
-      "lsrs  r0, r0, #16\n\t"
-      "ldr   r4, [sp, #60]\n\t"
-      "muls  r0, r4, r0\n\t"
-      "ldr   r4, [sp, #64]\n\t"
-      "muls  r1, r4, r1\n\t"
-      "lsls  r0, r0, #16\n\t"
-      "orrs  r0, r1\n\t"  // lane_products(light, surface)
-      "ldr   r1, [sp, #92]\n\t"
-      "adds  r0, r0, r1\n\t"  // t
-      "lsrs  r1, r0, #8\n\t"
-      "ands  r1, r6\n\t"
-      "adds  r0, r0, r1\n\t"
-      "lsrs  r0, r0, #8\n\t"
-      "ands  r0, r6\n\t"  // bytes_1_3(t + bytes_1_3(t))
-      "ldr   r4, [sp, #68]\n\t"
-      "muls  r5, r4, r5\n\t"
-      "adds  r5, #128\n\t"
-      "lsrs  r4, r5, #8\n\t"
-      "adds  r5, r5, r4\n\t"
-      "lsrs  r5, r5, #8\n\t"  // mul255
-      "2:\n\t"
-      // pack565
-      "movs  r1, #249\n\t"
-      "muls  r0, r1, r0\n\t"
-      "ldr   r1, [sp, #96]\n\t"
-      "adds  r0, r0, r1\n\t"
-      "lsrs  r0, r0, #11\n\t"
-      "ldr   r1, [sp, #100]\n\t"
-      "ands  r0, r1\n\t"  // B5 at 0, R5 at 16
-      "movs  r1, #253\n\t"
-      "muls  r5, r1, r5\n\t"
-      "adds  r5, #255\n\t"
-      "adds  r5, #250\n\t"
-      "lsrs  r5, r5, #10\n\t"
-      "lsls  r5, r5, #5\n\t"
-      "lsrs  r1, r0, #5\n\t"
-      "orrs  r0, r1\n\t"
-      "orrs  r0, r5\n\t"
-      "ldr   r7, [sp, #0]\n\t"
-      "ldr   r1, [sp, #4]\n\t"
-      "strh  r0, [r7, r1]\n\t"
-      "b     3b\n\t"
-      ".syntax divided\n\t");
+#define SPANLIGHT_THUMB1_RUN(DEPTH_LOAD, DEPTH_STORE, STEP, STORE)                                 \
+      ".syntax unified\n\t"                                                                                      \
+      "push  {r4-r7, lr}\n\t"                                                                                    \
+      "mov   r4, r8\n\t"                                                                                         \
+      "mov   r5, r9\n\t"                                                                                         \
+      "mov   r6, r10\n\t"                                                                                        \
+      "mov   r7, r11\n\t"                                                                                        \
+      "push  {r4-r7}\n\t"                                                                                        \
+      "sub   sp, #104\n\t"                                                                                       \
+      "mov   r7, sp\n\t"                                                                                         \
+      "ldmia r0!, {r1-r6}\n\t"                                                                                   \
+      "stmia r7!, {r1-r6}\n\t"                                                                                   \
+      "ldmia r0!, {r1-r6}\n\t"                                                                                   \
+      "stmia r7!, {r1-r6}\n\t"                                                                                   \
+      "ldmia r0!, {r1-r6}\n\t"                                                                                   \
+      "stmia r7!, {r1-r6}\n\t"                                                                                   \
+      "ldr   r1, [r0]\n\t"                                                                                       \
+      "str   r1, [r7]\n\t"                                                                                       \
+      "movs  r1, #255\n\t"                                                                                       \
+      "lsls  r2, r1, #16\n\t"                                                                                    \
+      "adds  r2, r2, r1\n\t"                                                                                     \
+      "str   r2, [sp, #88]\n\t"  /* 0x00FF00FF */                                                                \
+      "movs  r1, #128\n\t"                                                                                       \
+      "lsls  r2, r1, #16\n\t"                                                                                    \
+      "adds  r2, r2, r1\n\t"                                                                                     \
+      "str   r2, [sp, #92]\n\t"  /* 0x00800080 */                                                                \
+      "movs  r1, #63\n\t"                                                                                        \
+      "lsls  r1, r1, #4\n\t"                                                                                     \
+      "adds  r1, #6\n\t"                                                                                         \
+      "lsls  r2, r1, #16\n\t"                                                                                    \
+      "adds  r2, r2, r1\n\t"                                                                                     \
+      "str   r2, [sp, #96]\n\t"  /* 0x03F603F6 */                                                                \
+      "movs  r1, #31\n\t"                                                                                        \
+      "lsls  r2, r1, #16\n\t"                                                                                    \
+      "adds  r2, r2, r1\n\t"                                                                                     \
+      "str   r2, [sp, #100]\n\t"  /* 0x001F001F */                                                               \
+      "ldr   r1, [sp, #12]\n\t"                                                                                  \
+      "mov   r12, r1\n\t"  /* z */                                                                               \
+      "ldr   r1, [sp, #16]\n\t"                                                                                  \
+      "mov   lr, r1\n\t"  /* dz */                                                                               \
+      "ldr   r1, [sp, #20]\n\t"                                                                                  \
+      "mov   r8, r1\n\t"  /* u */                                                                                \
+      "ldr   r1, [sp, #24]\n\t"                                                                                  \
+      "mov   r9, r1\n\t"  /* du */                                                                               \
+      "ldr   r1, [sp, #32]\n\t"                                                                                  \
+      "mov   r10, r1\n\t"  /* v */                                                                               \
+      "ldr   r1, [sp, #36]\n\t"                                                                                  \
+      "mov   r11, r1\n\t"  /* dv */                                                                              \
+      "ldr   r7, [sp, #0]\n\t"                                                                                   \
+      /* ---- a pixel: r7 is its depth's address */                                                              \
+      "1:\n\t"                                                                                                   \
+      "mov   r0, r12\n\t"                                                                                        \
+      DEPTH_LOAD /* r0 the stored depth, r1 the buffer's */                                                      \
+      "cmp   r0, r1\n\t"                                                                                         \
+      "blo   4f\n\t"  /* nearer: drawn below, then back to 3 */                                                  \
+      /* ---- the next pixel (a pixel not nearer stays) */                                                       \
+      "3:\n\t"                                                                                                   \
+      "add   r8, r9\n\t"                                                                                         \
+      "ldr   r0, [sp, #28]\n\t"                                                                                  \
+      "add   r9, r0\n\t"                                                                                         \
+      "add   r10, r11\n\t"                                                                                       \
+      "ldr   r0, [sp, #40]\n\t"                                                                                  \
+      "add   r11, r0\n\t"                                                                                        \
+      "add   r12, lr\n\t"                                                                                        \
+      STEP /* r7 to the next depth, and the colour pointer */                                                    \
+      "str   r7, [sp, #0]\n\t"                                                                                   \
+      "ldr   r0, [sp, #8]\n\t"                                                                                   \
+      "cmp   r7, r0\n\t"                                                                                         \
+      "bne   1b\n\t"                                                                                             \
+      "add   sp, #104\n\t"                                                                                       \
+      "pop   {r4-r7}\n\t"                                                                                        \
+      "mov   r8, r4\n\t"                                                                                         \
+      "mov   r9, r5\n\t"                                                                                         \
+      "mov   r10, r6\n\t"                                                                                        \
+      "mov   r11, r7\n\t"                                                                                        \
+      "pop   {r4-r7, pc}\n\t"                                                                                    \
+      /* ---- a pixel drawn */                                                                                   \
+      "4:\n\t"                                                                                                   \
+      DEPTH_STORE                                                                                                \
+      /* The footprint: u >> x_down = x0 << 8 | fx, the same for v. */                                           \
+      "mov   r2, r8\n\t"                                                                                         \
+      "ldr   r3, [sp, #52]\n\t"                                                                                  \
+      "lsrs  r2, r3\n\t"                                                                                         \
+      "mov   r5, r10\n\t"                                                                                        \
+      "ldr   r3, [sp, #56]\n\t"                                                                                  \
+      "lsrs  r5, r3\n\t"                                                                                         \
+      "lsrs  r6, r5, #8\n\t"  /* y0 */                                                                           \
+      "uxtb  r5, r5\n\t"      /* fy */                                                                           \
+      "str   r5, [sp, #76]\n\t"                                                                                  \
+      "ldr   r3, [sp, #48]\n\t"                                                                                  \
+      "muls  r6, r3, r6\n\t"  /* y0 * stride */                                                                  \
+      "lsrs  r4, r2, #8\n\t"  /* x0 */                                                                           \
+      "uxtb  r2, r2\n\t"      /* fx */                                                                           \
+      "adds  r6, r6, r4\n\t"                                                                                     \
+      "lsls  r6, r6, #2\n\t"                                                                                     \
+      "ldr   r4, [sp, #44]\n\t"                                                                                  \
+      "adds  r6, r6, r4\n\t"  /* &texel (x0, y0) */                                                              \
+      "lsls  r3, r3, #2\n\t"                                                                                     \
+      "ldr   r0, [r6]\n\t"      /* t00 */                                                                        \
+      "ldr   r1, [r6, #4]\n\t"  /* t10 */                                                                        \
+      "adds  r6, r6, r3\n\t"                                                                                     \
+      "ldr   r3, [r6]\n\t"      /* t01 */                                                                        \
+      "ldr   r4, [r6, #4]\n\t"  /* t11 */                                                                        \
+      "ldr   r6, [sp, #88]\n\t"  /* m = 0x00FF00FF */                                                            \
+      /* Green as a vector over the two rows, blended by fx: lerp_lanes(c0, c1, f) = (c0 << 8) + (c1 - c0) f. */ \
+      "lsrs  r5, r0, #8\n\t"                                                                                     \
+      "lsls  r7, r3, #8\n\t"                                                                                     \
+      "orrs  r5, r7\n\t"                                                                                         \
+      "ands  r5, r6\n\t"                                                                                         \
+      "str   r5, [sp, #80]\n\t"                                                                                  \
+      "lsrs  r5, r1, #8\n\t"                                                                                     \
+      "lsls  r7, r4, #8\n\t"                                                                                     \
+      "orrs  r5, r7\n\t"                                                                                         \
+      "ands  r5, r6\n\t"                                                                                         \
+      "ldr   r7, [sp, #80]\n\t"                                                                                  \
+      "subs  r5, r5, r7\n\t"                                                                                     \
+      "muls  r5, r2, r5\n\t"                                                                                     \
+      "lsls  r7, r7, #8\n\t"                                                                                     \
+      "adds  r5, r5, r7\n\t"                                                                                     \
+      "str   r5, [sp, #84]\n\t"  /* the greens' rows */                                                          \
+      /* Red and blue of each row, blended by fx. */                                                             \
+      "ands  r0, r6\n\t"                                                                                         \
+      "ands  r1, r6\n\t"                                                                                         \
+      "subs  r1, r1, r0\n\t"                                                                                     \
+      "muls  r1, r2, r1\n\t"                                                                                     \
+      "lsls  r0, r0, #8\n\t"                                                                                     \
+      "adds  r0, r0, r1\n\t"  /* the top row */                                                                  \
+      "ands  r3, r6\n\t"                                                                                         \
+      "ands  r4, r6\n\t"                                                                                         \
+      "subs  r4, r4, r3\n\t"                                                                                     \
+      "muls  r4, r2, r4\n\t"                                                                                     \
+      "lsls  r3, r3, #8\n\t"                                                                                     \
+      "adds  r3, r3, r4\n\t"  /* the bottom row */                                                               \
+      /* The rows blended by fy, high bytes (A) and low bytes (B) apart. */                                      \
+      "ldr   r7, [sp, #76]\n\t"                                                                                  \
+      "lsrs  r1, r0, #8\n\t"                                                                                     \
+      "ands  r1, r6\n\t"                                                                                         \
+      "lsrs  r4, r3, #8\n\t"                                                                                     \
+      "ands  r4, r6\n\t"                                                                                         \
+      "subs  r4, r4, r1\n\t"                                                                                     \
+      "muls  r4, r7, r4\n\t"                                                                                     \
+      "lsls  r1, r1, #8\n\t"                                                                                     \
+      "adds  r1, r1, r4\n\t"  /* A */                                                                            \
+      "ands  r0, r6\n\t"                                                                                         \
+      "ands  r3, r6\n\t"                                                                                         \
+      "subs  r3, r3, r0\n\t"                                                                                     \
+      "muls  r3, r7, r3\n\t"                                                                                     \
+      "lsls  r0, r0, #8\n\t"                                                                                     \
+      "adds  r0, r0, r3\n\t"  /* B */                                                                            \
+      /* round_sums: bytes_1_3(A + bytes_1_3(B) + 0x00800080). */                                                \
+      "lsrs  r0, r0, #8\n\t"                                                                                     \
+      "ands  r0, r6\n\t"                                                                                         \
+      "adds  r0, r0, r1\n\t"                                                                                     \
+      "ldr   r1, [sp, #92]\n\t"                                                                                  \
+      "adds  r0, r0, r1\n\t"                                                                                     \
+      "lsrs  r0, r0, #8\n\t"                                                                                     \
+      "ands  r0, r6\n\t"  /* red and blue */                                                                     \
+      "ldr   r5, [sp, #84]\n\t"                                                                                  \
+      "lsrs  r4, r5, #16\n\t"                                                                                    \
+      "uxth  r5, r5\n\t"                                                                                         \
+      "subs  r4, r4, r5\n\t"                                                                                     \
+      "muls  r4, r7, r4\n\t"                                                                                     \
+      "lsls  r5, r5, #8\n\t"                                                                                     \
+      "adds  r5, r5, r4\n\t"                                                                                     \
+      "movs  r4, #128\n\t"                                                                                       \
+      "lsls  r4, r4, #8\n\t"                                                                                     \
+      "adds  r5, r5, r4\n\t"                                                                                     \
+      "lsrs  r5, r5, #16\n\t"  /* green */                                                                       \
+      /* The light (colour.hpp, modulate), unless white. */                                                      \
+      "ldr   r4, [sp, #72]\n\t"                                                                                  \
+      "cmp   r4, #0\n\t"                                                                                         \
+      "beq   2f\n\t"                                                                                             \
+      "uxth  r1, r0\n\t"                                                                                         \
+      "lsrs  r0, r0, #16\n\t"                                                                                    \
+      "ldr   r4, [sp, #60]\n\t"                                                                                  \
+      "muls  r0, r4, r0\n\t"                                                                                     \
+      "ldr   r4, [sp, #64]\n\t"                                                                                  \
+      "muls  r1, r4, r1\n\t"                                                                                     \
+      "lsls  r0, r0, #16\n\t"                                                                                    \
+      "orrs  r0, r1\n\t"  /* lane_products(light, surface) */                                                    \
+      "ldr   r1, [sp, #92]\n\t"                                                                                  \
+      "adds  r0, r0, r1\n\t"  /* t */                                                                            \
+      "lsrs  r1, r0, #8\n\t"                                                                                     \
+      "ands  r1, r6\n\t"                                                                                         \
+      "adds  r0, r0, r1\n\t"                                                                                     \
+      "lsrs  r0, r0, #8\n\t"                                                                                     \
+      "ands  r0, r6\n\t"  /* bytes_1_3(t + bytes_1_3(t)) */                                                      \
+      "ldr   r4, [sp, #68]\n\t"                                                                                  \
+      "muls  r5, r4, r5\n\t"                                                                                     \
+      "adds  r5, #128\n\t"                                                                                       \
+      "lsrs  r4, r5, #8\n\t"                                                                                     \
+      "adds  r5, r5, r4\n\t"                                                                                     \
+      "lsrs  r5, r5, #8\n\t"  /* mul255 */                                                                       \
+      "2:\n\t"                                                                                                   \
+      STORE /* r0 red and blue (0x00RR00BB), r5 green */                                                         \
+      "b     3b\n\t"                                                                                             \
+      ".syntax divided\n\t"
+
+// The pieces that differ. Depth: 16 bits in halfwords or 24 in words. Colour: RGB565 over
+// 16-bit depth steps as the depth does (slot 4 holds the offset between the two buffers);
+// otherwise slot 4 is the colour pointer, stepped per pixel.
+#define SPANLIGHT_THUMB1_DEPTH16_LOAD "lsrs  r0, r0, #16\n\t" "ldrh  r1, [r7]\n\t"
+#define SPANLIGHT_THUMB1_DEPTH16_STORE "strh  r0, [r7]\n\t"
+#define SPANLIGHT_THUMB1_DEPTH24_LOAD "lsrs  r0, r0, #8\n\t" "ldr   r1, [r7]\n\t"
+#define SPANLIGHT_THUMB1_DEPTH24_STORE "str   r0, [r7]\n\t"
+#define SPANLIGHT_THUMB1_STEP_DEPTH(BYTES) "adds  r7, #" #BYTES "\n\t"
+#define SPANLIGHT_THUMB1_STEP_COLOUR(BYTES) "ldr   r0, [sp, #4]\n\t" "adds  r0, #" #BYTES "\n\t" "str   r0, [sp, #4]\n\t"
+// pack565 (colour.hpp), then the halfword at the colour offset or pointer.
+#define SPANLIGHT_THUMB1_PACK565                                                      \
+  "movs  r1, #249\n\t"                                                                 \
+  "muls  r0, r1, r0\n\t"                                                               \
+  "ldr   r1, [sp, #96]\n\t"                                                            \
+  "adds  r0, r0, r1\n\t"                                                               \
+  "lsrs  r0, r0, #11\n\t"                                                              \
+  "ldr   r1, [sp, #100]\n\t"                                                           \
+  "ands  r0, r1\n\t" /* B5 at 0, R5 at 16 */                                           \
+  "movs  r1, #253\n\t"                                                                 \
+  "muls  r5, r1, r5\n\t"                                                               \
+  "adds  r5, #255\n\t"                                                                 \
+  "adds  r5, #250\n\t"                                                                 \
+  "lsrs  r5, r5, #10\n\t"                                                              \
+  "lsls  r5, r5, #5\n\t"                                                               \
+  "lsrs  r1, r0, #5\n\t"                                                               \
+  "orrs  r0, r1\n\t"                                                                   \
+  "orrs  r0, r5\n\t"
+#define SPANLIGHT_THUMB1_STORE565_AT_OFFSET SPANLIGHT_THUMB1_PACK565 "ldr   r7, [sp, #0]\n\t" "ldr   r1, [sp, #4]\n\t" "strh  r0, [r7, r1]\n\t"
+#define SPANLIGHT_THUMB1_STORE565 SPANLIGHT_THUMB1_PACK565 "ldr   r7, [sp, #0]\n\t" "ldr   r1, [sp, #4]\n\t" "strh  r0, [r1]\n\t"
+#define SPANLIGHT_THUMB1_STORE888 \
+  "ldr   r7, [sp, #0]\n\t" "ldr   r1, [sp, #4]\n\t" "strb  r5, [r1, #1]\n\t" "strb  r0, [r1, #2]\n\t" "lsrs  r0, r0, #16\n\t" "strb  r0, [r1]\n\t"
+
+[[gnu::naked, gnu::noinline]] inline void thumb1_run_z16_rgb565(const Thumb1Run* /*run*/) {
+  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
+                                        SPANLIGHT_THUMB1_STEP_DEPTH(2),
+                                        SPANLIGHT_THUMB1_STORE565_AT_OFFSET));
+}
+[[gnu::naked, gnu::noinline]] inline void thumb1_run_z24_rgb565(const Thumb1Run* /*run*/) {
+  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_DEPTH24_LOAD, SPANLIGHT_THUMB1_DEPTH24_STORE,
+                                        SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(2),
+                                        SPANLIGHT_THUMB1_STORE565));
+}
+[[gnu::naked, gnu::noinline]] inline void thumb1_run_z16_rgb888(const Thumb1Run* /*run*/) {
+  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
+                                        SPANLIGHT_THUMB1_STEP_DEPTH(2) SPANLIGHT_THUMB1_STEP_COLOUR(3),
+                                        SPANLIGHT_THUMB1_STORE888));
+}
+[[gnu::naked, gnu::noinline]] inline void thumb1_run_z24_rgb888(const Thumb1Run* /*run*/) {
+  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_DEPTH24_LOAD, SPANLIGHT_THUMB1_DEPTH24_STORE,
+                                        SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(3),
+                                        SPANLIGHT_THUMB1_STORE888));
+}
+
+#undef SPANLIGHT_THUMB1_RUN
+#undef SPANLIGHT_THUMB1_DEPTH16_LOAD
+#undef SPANLIGHT_THUMB1_DEPTH16_STORE
+#undef SPANLIGHT_THUMB1_DEPTH24_LOAD
+#undef SPANLIGHT_THUMB1_DEPTH24_STORE
+#undef SPANLIGHT_THUMB1_STEP_DEPTH
+#undef SPANLIGHT_THUMB1_STEP_COLOUR
+#undef SPANLIGHT_THUMB1_PACK565
+#undef SPANLIGHT_THUMB1_STORE565_AT_OFFSET
+#undef SPANLIGHT_THUMB1_STORE565
+#undef SPANLIGHT_THUMB1_STORE888
+
+// The loop for a pass's depth and colour storage (16-bit depth in halfwords, 24-bit in words).
+template <int DepthBits, PixelFormat Format>
+[[gnu::always_inline]] inline void thumb1_fused_bilinear_run(const Thumb1Run* run) {
+  static_assert((DepthBits == 16 || DepthBits == 24) && (Format == PixelFormat::rgb565 || Format == PixelFormat::rgb888));
+  if constexpr (DepthBits == 16 && Format == PixelFormat::rgb565) thumb1_run_z16_rgb565(run);
+  else if constexpr (DepthBits == 24 && Format == PixelFormat::rgb565) thumb1_run_z24_rgb565(run);
+  else if constexpr (DepthBits == 16) thumb1_run_z16_rgb888(run);
+  else thumb1_run_z24_rgb888(run);
 }
 #endif
 

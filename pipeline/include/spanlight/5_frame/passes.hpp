@@ -9,6 +9,7 @@
 #pragma once
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <type_traits>
@@ -235,8 +236,14 @@ struct FusedKernel {
   DepthFormat<F.depth_bits> depth;
   Hooks& hooks;
   Surface surface{};
+#if defined(__ARM_ARCH_6M__)
+  Thumb1Object thumb1{};  // the object as the Thumb-1 run reads it (thumb1_shape)
+#endif
   SpanNeeds object(const ObjectData& o) {
     surface = surface_of(o, textures);
+#if defined(__ARM_ARCH_6M__)
+    if constexpr (thumb1_shape) set_thumb1_object();
+#endif
     return {o.texture >= 0, surface.scale, 0, projector_count, surface.kind == SurfaceKind::trilinear};
   }
 
@@ -246,7 +253,12 @@ struct FusedKernel {
     for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { any_light |= may_light(r, j, count); });
 #if defined(__ARM_ARCH_6M__)
     if constexpr (thumb1_shape) {
-      if (!any_light && surface.kind == SurfaceKind::bilinear_repeat && !(F.tinted && surface.tinted)) return thumb1_run(i, count, r);
+      if (!any_light && surface.kind == SurfaceKind::bilinear_repeat && !(F.tinted && surface.tinted)) {
+        static_assert(offsetof(PixelRun<PR>, z) == 0 && offsetof(PixelRun<PR>, dz) == 4 && offsetof(PixelRun<PR>, u) == 8 &&
+                      offsetof(PixelRun<PR>, v) == 20 && sizeof(Stepped) == 12, "the Thumb-1 run reads these words");
+        if (count > 0) thumb1_fused_bilinear_run<F.depth_bits, F.format>(&r, thumb1, band.depth + i, band.depth + i + count);
+        return;
+      }
     }
 #endif
     with_sampler<F>(surface, r.level, [&](auto&& sample) SPANLIGHT_LAMBDA_INLINE_ATTR {
@@ -263,18 +275,13 @@ struct FusedKernel {
       (F.format == PixelFormat::rgb565 || F.format == PixelFormat::rgb888) && F.bilinear && !sees_pixels<Hooks>() &&
       ((F.depth_bits == 16 && std::is_same_v<DepthT, std::uint16_t>) || (F.depth_bits == 24 && std::is_same_v<DepthT, std::uint32_t>));
 
-  // A run of a bilinear repeating texture under a constant light, in Thumb-1.
-  template <int PR>
-  void thumb1_run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
-    if (count <= 0) return;
+  // The object's and the pass's words for the Thumb-1 run.
+  void set_thumb1_object() {
     const TexelGrid& g = surface.grid;
-    DepthT* d = band.depth + i;
-    auto colour = reinterpret_cast<std::uintptr_t>(band.color + i * Color::per_pixel);
-    if constexpr (F.depth_bits == 16 && F.format == PixelFormat::rgb565) colour -= reinterpret_cast<std::uintptr_t>(d);
-    const Thumb1Run run{d, colour, d + count, r.z, r.dz, r.u.value, r.u.step, r.u.curve,
-                        r.v.value, r.v.step, r.v.curve, g.texels, g.stride, static_cast<std::uint32_t>(g.x_shift - 8),
-                        static_cast<std::uint32_t>(g.y_shift - 8), red(ambient), blue(ambient), green(ambient), ambient != white};
-    thumb1_fused_bilinear_run<F.depth_bits, F.format>(&run);
+    auto colour = reinterpret_cast<std::uintptr_t>(band.color);
+    if constexpr (F.depth_bits == 16 && F.format == PixelFormat::rgb565) colour -= reinterpret_cast<std::uintptr_t>(band.depth);
+    thumb1 = {colour, reinterpret_cast<std::uintptr_t>(band.depth), g.texels, g.stride, static_cast<std::uint32_t>(g.x_shift - 8),
+              static_cast<std::uint32_t>(g.y_shift - 8), red(ambient), blue(ambient), green(ambient), ambient != white};
   }
 #endif
 

@@ -16,29 +16,28 @@
 
 namespace spanlight {
 
-// What the loop reads, word by word (the offsets are the assembly's).
-struct Thumb1Run {
-  void* depth;                 //  0: the run's first pixel in the depth buffer
-  std::uintptr_t colour;       //  4: and in the colour buffer; for RGB565 over 16-bit depth
-                               //     the offset from a pixel's depth to its colour, in bytes
-  void* depth_end;             //  8: one past the run's last pixel (the run has at least one)
-  std::uint32_t z;             // 12: Q0.32, stored as z >> (32 - depth bits)
-  std::int32_t dz;             // 16
-  std::uint32_t u, du, ddu;    // 20, 24, 28: x in the sampler's scale (walk.hpp), stepped
-  std::uint32_t v, dv, ddv;    // 32, 36, 40
-  const std::uint32_t* texels; // 44: texel (0, 0) of the repeating level
-  std::int32_t stride;         // 48: words from a row to the next
-  std::uint32_t x_down, y_down;  // 52, 56: x_shift - 8, y_shift - 8 (index and weight bits)
-  std::uint32_t light_r, light_b, light_g;  // 60, 64, 68: the constant light, 8-bit levels
-  std::uint32_t lit;           // 72: 0 when the light is white (the surface itself)
+// What the loop reads of the object and the pass, word by word (the offsets are the
+// assembly's, less 32): set once an object, copied to the loop's frame once a run. The run's
+// stepped values come from its PixelRun (z, dz, u, v at 0, 4, 8, 20: passes.hpp asserts it).
+struct Thumb1Object {
+  std::uintptr_t colour;       //  0: the colour buffer's address; for RGB565 over 16-bit depth the
+                               //     offset from a pixel's depth to its colour, in bytes
+  std::uintptr_t depth;        //  4: the depth buffer's address
+  const std::uint32_t* texels; //  8: texel (0, 0) of the repeating level
+  std::int32_t stride;         // 12: words from a row to the next
+  std::uint32_t x_down, y_down;  // 16, 20: x_shift - 8, y_shift - 8 (index and weight bits)
+  std::uint32_t light_r, light_b, light_g;  // 24, 28, 32: the constant light, 8-bit levels
+  std::uint32_t lit;           // 36: 0 when the light is white (the surface itself)
+  std::uint32_t lanes = 0x00FF00FFu, half = 0x00800080u, to5_bias = 0x03F603F6u, five_bits = 0x001F001Fu;  // 40..52
 };
 
 #if defined(__ARM_ARCH_6M__)
 // One loop, its depth and colour pieces filled in below (r0 = the run on entry).
-// The frame below the saved registers: the run copied (0..72), then the pixel's
-// spilled values (76 fy, 80 column 0's greens, 84 the greens' rows) and constants
-// (88 0x00FF00FF, 92 0x00800080, 96 0x03F603F6, 100 0x001F001F).
-#define SPANLIGHT_THUMB1_RUN(DEPTH_LOAD, DEPTH_STORE, STEP, STORE)                                 \
+// Entry: r0 the PixelRun, r1 the Thumb1Object, r2 the run's first depth, r3 one past its last
+// (at least one pixel). The frame below the saved registers: 0 the depth pointer, 4 the
+// colour pointer, 8 the end, 12 ddu, 16 ddv, 20 fy, 24 column 0's greens, 28 the greens'
+// rows, 32..84 the Thumb1Object. u, du, v, dv, z, dz live in r8..r12 and lr.
+#define SPANLIGHT_THUMB1_RUN(COLOUR_START, DEPTH_LOAD, DEPTH_STORE, STEP, STORE)                                 \
       ".syntax unified\n\t"                                                                                      \
       "push  {r4-r7, lr}\n\t"                                                                                    \
       "mov   r4, r8\n\t"                                                                                         \
@@ -46,46 +45,27 @@ struct Thumb1Run {
       "mov   r6, r10\n\t"                                                                                        \
       "mov   r7, r11\n\t"                                                                                        \
       "push  {r4-r7}\n\t"                                                                                        \
-      "sub   sp, #104\n\t"                                                                                       \
-      "mov   r7, sp\n\t"                                                                                         \
-      "ldmia r0!, {r1-r6}\n\t"                                                                                   \
-      "stmia r7!, {r1-r6}\n\t"                                                                                   \
-      "ldmia r0!, {r1-r6}\n\t"                                                                                   \
-      "stmia r7!, {r1-r6}\n\t"                                                                                   \
-      "ldmia r0!, {r1-r6}\n\t"                                                                                   \
-      "stmia r7!, {r1-r6}\n\t"                                                                                   \
-      "ldr   r1, [r0]\n\t"                                                                                       \
-      "str   r1, [r7]\n\t"                                                                                       \
-      "movs  r1, #255\n\t"                                                                                       \
-      "lsls  r2, r1, #16\n\t"                                                                                    \
-      "adds  r2, r2, r1\n\t"                                                                                     \
-      "str   r2, [sp, #88]\n\t"  /* 0x00FF00FF */                                                                \
-      "movs  r1, #128\n\t"                                                                                       \
-      "lsls  r2, r1, #16\n\t"                                                                                    \
-      "adds  r2, r2, r1\n\t"                                                                                     \
-      "str   r2, [sp, #92]\n\t"  /* 0x00800080 */                                                                \
-      "movs  r1, #63\n\t"                                                                                        \
-      "lsls  r1, r1, #4\n\t"                                                                                     \
-      "adds  r1, #6\n\t"                                                                                         \
-      "lsls  r2, r1, #16\n\t"                                                                                    \
-      "adds  r2, r2, r1\n\t"                                                                                     \
-      "str   r2, [sp, #96]\n\t"  /* 0x03F603F6 */                                                                \
-      "movs  r1, #31\n\t"                                                                                        \
-      "lsls  r2, r1, #16\n\t"                                                                                    \
-      "adds  r2, r2, r1\n\t"                                                                                     \
-      "str   r2, [sp, #100]\n\t"  /* 0x001F001F */                                                               \
-      "ldr   r1, [sp, #12]\n\t"                                                                                  \
-      "mov   r12, r1\n\t"  /* z */                                                                               \
-      "ldr   r1, [sp, #16]\n\t"                                                                                  \
-      "mov   lr, r1\n\t"  /* dz */                                                                               \
-      "ldr   r1, [sp, #20]\n\t"                                                                                  \
-      "mov   r8, r1\n\t"  /* u */                                                                                \
-      "ldr   r1, [sp, #24]\n\t"                                                                                  \
-      "mov   r9, r1\n\t"  /* du */                                                                               \
-      "ldr   r1, [sp, #32]\n\t"                                                                                  \
-      "mov   r10, r1\n\t"  /* v */                                                                               \
-      "ldr   r1, [sp, #36]\n\t"                                                                                  \
-      "mov   r11, r1\n\t"  /* dv */                                                                              \
+      "sub   sp, #88\n\t"                                                                                        \
+      "str   r2, [sp, #0]\n\t"  /* the first depth */                                                            \
+      "str   r3, [sp, #8]\n\t"  /* one past the last */                                                          \
+      "add   r7, sp, #32\n\t"                                                                                    \
+      "ldmia r1!, {r2-r6}\n\t"                                                                                   \
+      "stmia r7!, {r2-r6}\n\t"                                                                                   \
+      "ldmia r1!, {r2-r6}\n\t"                                                                                   \
+      "stmia r7!, {r2-r6}\n\t"                                                                                   \
+      "ldmia r1!, {r2-r5}\n\t"                                                                                   \
+      "stmia r7!, {r2-r5}\n\t"  /* the object, at 32..84 */                                                      \
+      COLOUR_START                                                                                               \
+      "ldmia r0!, {r1-r6}\n\t"  /* z, dz, u, du, ddu, v */                                                       \
+      "mov   r12, r1\n\t"                                                                                        \
+      "mov   lr, r2\n\t"                                                                                         \
+      "mov   r8, r3\n\t"                                                                                         \
+      "mov   r9, r4\n\t"                                                                                         \
+      "str   r5, [sp, #12]\n\t"                                                                                  \
+      "mov   r10, r6\n\t"                                                                                        \
+      "ldmia r0!, {r1-r2}\n\t"  /* dv, ddv */                                                                    \
+      "mov   r11, r1\n\t"                                                                                        \
+      "str   r2, [sp, #16]\n\t"                                                                                  \
       "ldr   r7, [sp, #0]\n\t"                                                                                   \
       /* ---- a pixel: r7 is its depth's address */                                                              \
       "1:\n\t"                                                                                                   \
@@ -96,10 +76,10 @@ struct Thumb1Run {
       /* ---- the next pixel (a pixel not nearer stays) */                                                       \
       "3:\n\t"                                                                                                   \
       "add   r8, r9\n\t"                                                                                         \
-      "ldr   r0, [sp, #28]\n\t"                                                                                  \
+      "ldr   r0, [sp, #12]\n\t"                                                                                  \
       "add   r9, r0\n\t"                                                                                         \
       "add   r10, r11\n\t"                                                                                       \
-      "ldr   r0, [sp, #40]\n\t"                                                                                  \
+      "ldr   r0, [sp, #16]\n\t"                                                                                  \
       "add   r11, r0\n\t"                                                                                        \
       "add   r12, lr\n\t"                                                                                        \
       STEP /* r7 to the next depth, and the colour pointer */                                                    \
@@ -107,7 +87,7 @@ struct Thumb1Run {
       "ldr   r0, [sp, #8]\n\t"                                                                                   \
       "cmp   r7, r0\n\t"                                                                                         \
       "bne   1b\n\t"                                                                                             \
-      "add   sp, #104\n\t"                                                                                       \
+      "add   sp, #88\n\t"                                                                                       \
       "pop   {r4-r7}\n\t"                                                                                        \
       "mov   r8, r4\n\t"                                                                                         \
       "mov   r9, r5\n\t"                                                                                         \
@@ -119,21 +99,21 @@ struct Thumb1Run {
       DEPTH_STORE                                                                                                \
       /* The footprint: u >> x_down = x0 << 8 | fx, the same for v. */                                           \
       "mov   r2, r8\n\t"                                                                                         \
-      "ldr   r3, [sp, #52]\n\t"                                                                                  \
+      "ldr   r3, [sp, #48]\n\t"                                                                                  \
       "lsrs  r2, r3\n\t"                                                                                         \
       "mov   r5, r10\n\t"                                                                                        \
-      "ldr   r3, [sp, #56]\n\t"                                                                                  \
+      "ldr   r3, [sp, #52]\n\t"                                                                                  \
       "lsrs  r5, r3\n\t"                                                                                         \
       "lsrs  r6, r5, #8\n\t"  /* y0 */                                                                           \
       "uxtb  r5, r5\n\t"      /* fy */                                                                           \
-      "str   r5, [sp, #76]\n\t"                                                                                  \
-      "ldr   r3, [sp, #48]\n\t"                                                                                  \
+      "str   r5, [sp, #20]\n\t"                                                                                  \
+      "ldr   r3, [sp, #44]\n\t"                                                                                  \
       "muls  r6, r3, r6\n\t"  /* y0 * stride */                                                                  \
       "lsrs  r4, r2, #8\n\t"  /* x0 */                                                                           \
       "uxtb  r2, r2\n\t"      /* fx */                                                                           \
       "adds  r6, r6, r4\n\t"                                                                                     \
       "lsls  r6, r6, #2\n\t"                                                                                     \
-      "ldr   r4, [sp, #44]\n\t"                                                                                  \
+      "ldr   r4, [sp, #40]\n\t"                                                                                  \
       "adds  r6, r6, r4\n\t"  /* &texel (x0, y0) */                                                              \
       "lsls  r3, r3, #2\n\t"                                                                                     \
       "ldr   r0, [r6]\n\t"      /* t00 */                                                                        \
@@ -141,23 +121,23 @@ struct Thumb1Run {
       "adds  r6, r6, r3\n\t"                                                                                     \
       "ldr   r3, [r6]\n\t"      /* t01 */                                                                        \
       "ldr   r4, [r6, #4]\n\t"  /* t11 */                                                                        \
-      "ldr   r6, [sp, #88]\n\t"  /* m = 0x00FF00FF */                                                            \
+      "ldr   r6, [sp, #72]\n\t"  /* m = 0x00FF00FF */                                                            \
       /* Green as a vector over the two rows, blended by fx: lerp_lanes(c0, c1, f) = (c0 << 8) + (c1 - c0) f. */ \
       "lsrs  r5, r0, #8\n\t"                                                                                     \
       "lsls  r7, r3, #8\n\t"                                                                                     \
       "orrs  r5, r7\n\t"                                                                                         \
       "ands  r5, r6\n\t"                                                                                         \
-      "str   r5, [sp, #80]\n\t"                                                                                  \
+      "str   r5, [sp, #24]\n\t"                                                                                  \
       "lsrs  r5, r1, #8\n\t"                                                                                     \
       "lsls  r7, r4, #8\n\t"                                                                                     \
       "orrs  r5, r7\n\t"                                                                                         \
       "ands  r5, r6\n\t"                                                                                         \
-      "ldr   r7, [sp, #80]\n\t"                                                                                  \
+      "ldr   r7, [sp, #24]\n\t"                                                                                  \
       "subs  r5, r5, r7\n\t"                                                                                     \
       "muls  r5, r2, r5\n\t"                                                                                     \
       "lsls  r7, r7, #8\n\t"                                                                                     \
       "adds  r5, r5, r7\n\t"                                                                                     \
-      "str   r5, [sp, #84]\n\t"  /* the greens' rows */                                                          \
+      "str   r5, [sp, #28]\n\t"  /* the greens' rows */                                                          \
       /* Red and blue of each row, blended by fx. */                                                             \
       "ands  r0, r6\n\t"                                                                                         \
       "ands  r1, r6\n\t"                                                                                         \
@@ -172,7 +152,7 @@ struct Thumb1Run {
       "lsls  r3, r3, #8\n\t"                                                                                     \
       "adds  r3, r3, r4\n\t"  /* the bottom row */                                                               \
       /* The rows blended by fy, high bytes (A) and low bytes (B) apart. */                                      \
-      "ldr   r7, [sp, #76]\n\t"                                                                                  \
+      "ldr   r7, [sp, #20]\n\t"                                                                                  \
       "lsrs  r1, r0, #8\n\t"                                                                                     \
       "ands  r1, r6\n\t"                                                                                         \
       "lsrs  r4, r3, #8\n\t"                                                                                     \
@@ -191,11 +171,11 @@ struct Thumb1Run {
       "lsrs  r0, r0, #8\n\t"                                                                                     \
       "ands  r0, r6\n\t"                                                                                         \
       "adds  r0, r0, r1\n\t"                                                                                     \
-      "ldr   r1, [sp, #92]\n\t"                                                                                  \
+      "ldr   r1, [sp, #76]\n\t"                                                                                  \
       "adds  r0, r0, r1\n\t"                                                                                     \
       "lsrs  r0, r0, #8\n\t"                                                                                     \
       "ands  r0, r6\n\t"  /* red and blue */                                                                     \
-      "ldr   r5, [sp, #84]\n\t"                                                                                  \
+      "ldr   r5, [sp, #28]\n\t"                                                                                  \
       "lsrs  r4, r5, #16\n\t"                                                                                    \
       "uxth  r5, r5\n\t"                                                                                         \
       "subs  r4, r4, r5\n\t"                                                                                     \
@@ -207,25 +187,25 @@ struct Thumb1Run {
       "adds  r5, r5, r4\n\t"                                                                                     \
       "lsrs  r5, r5, #16\n\t"  /* green */                                                                       \
       /* The light (colour.hpp, modulate), unless white. */                                                      \
-      "ldr   r4, [sp, #72]\n\t"                                                                                  \
+      "ldr   r4, [sp, #68]\n\t"                                                                                  \
       "cmp   r4, #0\n\t"                                                                                         \
       "beq   2f\n\t"                                                                                             \
       "uxth  r1, r0\n\t"                                                                                         \
       "lsrs  r0, r0, #16\n\t"                                                                                    \
-      "ldr   r4, [sp, #60]\n\t"                                                                                  \
+      "ldr   r4, [sp, #56]\n\t"                                                                                  \
       "muls  r0, r4, r0\n\t"                                                                                     \
-      "ldr   r4, [sp, #64]\n\t"                                                                                  \
+      "ldr   r4, [sp, #60]\n\t"                                                                                  \
       "muls  r1, r4, r1\n\t"                                                                                     \
       "lsls  r0, r0, #16\n\t"                                                                                    \
       "orrs  r0, r1\n\t"  /* lane_products(light, surface) */                                                    \
-      "ldr   r1, [sp, #92]\n\t"                                                                                  \
+      "ldr   r1, [sp, #76]\n\t"                                                                                  \
       "adds  r0, r0, r1\n\t"  /* t */                                                                            \
       "lsrs  r1, r0, #8\n\t"                                                                                     \
       "ands  r1, r6\n\t"                                                                                         \
       "adds  r0, r0, r1\n\t"                                                                                     \
       "lsrs  r0, r0, #8\n\t"                                                                                     \
       "ands  r0, r6\n\t"  /* bytes_1_3(t + bytes_1_3(t)) */                                                      \
-      "ldr   r4, [sp, #68]\n\t"                                                                                  \
+      "ldr   r4, [sp, #64]\n\t"                                                                                  \
       "muls  r5, r4, r5\n\t"                                                                                     \
       "adds  r5, #128\n\t"                                                                                       \
       "lsrs  r4, r5, #8\n\t"                                                                                     \
@@ -237,8 +217,15 @@ struct Thumb1Run {
       ".syntax divided\n\t"
 
 // The pieces that differ. Depth: 16 bits in halfwords or 24 in words. Colour: RGB565 over
-// 16-bit depth steps as the depth does (slot 4 holds the offset between the two buffers);
-// otherwise slot 4 is the colour pointer, stepped per pixel.
+// 16-bit depth steps as the depth does (its offset at 32 is the pass's); otherwise the colour
+// pointer (at 4) starts at the base plus the run's pixel index times the pixel's bytes,
+// the index from the depth pointer, and steps per pixel.
+// colour = base + (depth - depth base) * (colour bytes / depth bytes), the ratio by shifts.
+#define SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SCALE) \
+  "ldr   r1, [sp, #0]\n\t" "ldr   r2, [sp, #36]\n\t" "subs  r1, r1, r2\n\t" SCALE "ldr   r2, [sp, #32]\n\t" "adds  r1, r1, r2\n\t" "str   r1, [sp, #4]\n\t"
+#define SPANLIGHT_THUMB1_HALF "lsrs  r1, r1, #1\n\t"                                        /* 2 of 4 */
+#define SPANLIGHT_THUMB1_THREE_HALVES "lsrs  r2, r1, #1\n\t" "adds  r1, r1, r2\n\t"      /* 3 of 2 */
+#define SPANLIGHT_THUMB1_THREE_QUARTERS "lsrs  r2, r1, #2\n\t" "subs  r1, r1, r2\n\t"    /* 3 of 4 */
 #define SPANLIGHT_THUMB1_DEPTH16_LOAD "lsrs  r0, r0, #16\n\t" "ldrh  r1, [r7]\n\t"
 #define SPANLIGHT_THUMB1_DEPTH16_STORE "strh  r0, [r7]\n\t"
 #define SPANLIGHT_THUMB1_DEPTH24_LOAD "lsrs  r0, r0, #8\n\t" "ldr   r1, [r7]\n\t"
@@ -249,10 +236,10 @@ struct Thumb1Run {
 #define SPANLIGHT_THUMB1_PACK565                                                      \
   "movs  r1, #249\n\t"                                                                 \
   "muls  r0, r1, r0\n\t"                                                               \
-  "ldr   r1, [sp, #96]\n\t"                                                            \
+  "ldr   r1, [sp, #80]\n\t"                                                            \
   "adds  r0, r0, r1\n\t"                                                               \
   "lsrs  r0, r0, #11\n\t"                                                              \
-  "ldr   r1, [sp, #100]\n\t"                                                           \
+  "ldr   r1, [sp, #84]\n\t"                                                           \
   "ands  r0, r1\n\t" /* B5 at 0, R5 at 16 */                                           \
   "movs  r1, #253\n\t"                                                                 \
   "muls  r5, r1, r5\n\t"                                                               \
@@ -263,30 +250,29 @@ struct Thumb1Run {
   "lsrs  r1, r0, #5\n\t"                                                               \
   "orrs  r0, r1\n\t"                                                                   \
   "orrs  r0, r5\n\t"
-#define SPANLIGHT_THUMB1_STORE565_AT_OFFSET SPANLIGHT_THUMB1_PACK565 "ldr   r7, [sp, #0]\n\t" "ldr   r1, [sp, #4]\n\t" "strh  r0, [r7, r1]\n\t"
+#define SPANLIGHT_THUMB1_STORE565_AT_OFFSET SPANLIGHT_THUMB1_PACK565 "ldr   r7, [sp, #0]\n\t" "ldr   r1, [sp, #32]\n\t" "strh  r0, [r7, r1]\n\t"
 #define SPANLIGHT_THUMB1_STORE565 SPANLIGHT_THUMB1_PACK565 "ldr   r7, [sp, #0]\n\t" "ldr   r1, [sp, #4]\n\t" "strh  r0, [r1]\n\t"
 #define SPANLIGHT_THUMB1_STORE888 \
   "ldr   r7, [sp, #0]\n\t" "ldr   r1, [sp, #4]\n\t" "strb  r5, [r1, #1]\n\t" "strb  r0, [r1, #2]\n\t" "lsrs  r0, r0, #16\n\t" "strb  r0, [r1]\n\t"
 
-[[gnu::naked, gnu::noinline]] inline void thumb1_run_z16_rgb565(const Thumb1Run* /*run*/) {
-  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
-                                        SPANLIGHT_THUMB1_STEP_DEPTH(2),
-                                        SPANLIGHT_THUMB1_STORE565_AT_OFFSET));
+[[gnu::naked, gnu::noinline]] inline void thumb1_run_z16_rgb565(const void*, const Thumb1Object*, void*, void*) {
+  __asm__ volatile(SPANLIGHT_THUMB1_RUN("", SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
+                                        SPANLIGHT_THUMB1_STEP_DEPTH(2), SPANLIGHT_THUMB1_STORE565_AT_OFFSET));
 }
-[[gnu::naked, gnu::noinline]] inline void thumb1_run_z24_rgb565(const Thumb1Run* /*run*/) {
-  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_DEPTH24_LOAD, SPANLIGHT_THUMB1_DEPTH24_STORE,
-                                        SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(2),
-                                        SPANLIGHT_THUMB1_STORE565));
+[[gnu::naked, gnu::noinline]] inline void thumb1_run_z24_rgb565(const void*, const Thumb1Object*, void*, void*) {
+  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_HALF), SPANLIGHT_THUMB1_DEPTH24_LOAD,
+                                        SPANLIGHT_THUMB1_DEPTH24_STORE,
+                                        SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(2), SPANLIGHT_THUMB1_STORE565));
 }
-[[gnu::naked, gnu::noinline]] inline void thumb1_run_z16_rgb888(const Thumb1Run* /*run*/) {
-  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
-                                        SPANLIGHT_THUMB1_STEP_DEPTH(2) SPANLIGHT_THUMB1_STEP_COLOUR(3),
-                                        SPANLIGHT_THUMB1_STORE888));
+[[gnu::naked, gnu::noinline]] inline void thumb1_run_z16_rgb888(const void*, const Thumb1Object*, void*, void*) {
+  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_THREE_HALVES),
+                                        SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
+                                        SPANLIGHT_THUMB1_STEP_DEPTH(2) SPANLIGHT_THUMB1_STEP_COLOUR(3), SPANLIGHT_THUMB1_STORE888));
 }
-[[gnu::naked, gnu::noinline]] inline void thumb1_run_z24_rgb888(const Thumb1Run* /*run*/) {
-  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_DEPTH24_LOAD, SPANLIGHT_THUMB1_DEPTH24_STORE,
-                                        SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(3),
-                                        SPANLIGHT_THUMB1_STORE888));
+[[gnu::naked, gnu::noinline]] inline void thumb1_run_z24_rgb888(const void*, const Thumb1Object*, void*, void*) {
+  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_THREE_QUARTERS),
+                                        SPANLIGHT_THUMB1_DEPTH24_LOAD, SPANLIGHT_THUMB1_DEPTH24_STORE,
+                                        SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(3), SPANLIGHT_THUMB1_STORE888));
 }
 
 #undef SPANLIGHT_THUMB1_RUN
@@ -300,15 +286,20 @@ struct Thumb1Run {
 #undef SPANLIGHT_THUMB1_STORE565_AT_OFFSET
 #undef SPANLIGHT_THUMB1_STORE565
 #undef SPANLIGHT_THUMB1_STORE888
+#undef SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH
+#undef SPANLIGHT_THUMB1_HALF
+#undef SPANLIGHT_THUMB1_THREE_HALVES
+#undef SPANLIGHT_THUMB1_THREE_QUARTERS
 
-// The loop for a pass's depth and colour storage (16-bit depth in halfwords, 24-bit in words).
+// The loop for a pass's depth and colour storage (16-bit depth in halfwords, 24-bit in words):
+// pixels [depth, depth_end) of the run `run` (a PixelRun) of `object`.
 template <int DepthBits, PixelFormat Format>
-[[gnu::always_inline]] inline void thumb1_fused_bilinear_run(const Thumb1Run* run) {
+[[gnu::always_inline]] inline void thumb1_fused_bilinear_run(const void* run, const Thumb1Object& object, void* depth, void* depth_end) {
   static_assert((DepthBits == 16 || DepthBits == 24) && (Format == PixelFormat::rgb565 || Format == PixelFormat::rgb888));
-  if constexpr (DepthBits == 16 && Format == PixelFormat::rgb565) thumb1_run_z16_rgb565(run);
-  else if constexpr (DepthBits == 24 && Format == PixelFormat::rgb565) thumb1_run_z24_rgb565(run);
-  else if constexpr (DepthBits == 16) thumb1_run_z16_rgb888(run);
-  else thumb1_run_z24_rgb888(run);
+  if constexpr (DepthBits == 16 && Format == PixelFormat::rgb565) thumb1_run_z16_rgb565(run, &object, depth, depth_end);
+  else if constexpr (DepthBits == 24 && Format == PixelFormat::rgb565) thumb1_run_z24_rgb565(run, &object, depth, depth_end);
+  else if constexpr (DepthBits == 16) thumb1_run_z16_rgb888(run, &object, depth, depth_end);
+  else thumb1_run_z24_rgb888(run, &object, depth, depth_end);
 }
 #endif
 

@@ -1,6 +1,6 @@
 // kernel_check: the fused pass's run drawn twice over the same buffers, once by the kernel as
-// firmware builds it (on Cortex-M0+ the Thumb-1 loops of thumb1_run.hpp, for a bilinear repeating
-// texture) and once by the C++ loop (a hooks type that watches pixels keeps the kernel off the
+// firmware builds it (on Cortex-M0+ the Thumb-1 loops of thumb1_run.hpp, for a bilinear or
+// nearest repeating texture) and once by the C++ loop (a hooks type that watches pixels keeps the kernel off the
 // assembly), and compares depth and colour, for 16- and 24-bit depth and RGB565 and RGB888. The
 // runs are random: texture sizes from 2x2 to 64x32 with random texels, any u, v and z with their
 // steps, ambient white or not, depths that hide some pixels. On the other cores both are the C++
@@ -18,7 +18,7 @@ namespace {
 using namespace spanlight;
 
 template <int DepthBits, PixelFormat Format>
-constexpr Features features{.max_projectors = 0, .shadows = false, .pcf = false, .nearest = false, .bilinear = true,
+constexpr Features features{.max_projectors = 0, .shadows = false, .pcf = false, .nearest = true, .bilinear = true,
                             .clamped = false, .tinted = false, .trilinear = false, .falloff = false, .facing = false,
                             .format = Format, .fused = true, .multipass = false, .table_bits = 8, .newton = 1,
                             .depth_bits = DepthBits, .repeat_sizes = {}, .any_repeat_size = true};
@@ -45,8 +45,8 @@ struct Tally {
   std::uint32_t runs = 0, pixels = 0, drawn = 0, differing = 0;
 };
 
-// `runs` random runs drawn both ways with DepthBits in its storage and Format.
-template <int DepthBits, PixelFormat Format>
+// `runs` random runs drawn both ways with DepthBits in its storage, Format and the filter.
+template <int DepthBits, PixelFormat Format, Filter Filtered>
 void check(int runs, Tally& tally) {
   constexpr Features f = features<DepthBits, Format>;
   using Depth = std::conditional_t<DepthBits == 16, std::uint16_t, std::uint32_t>;
@@ -60,7 +60,7 @@ void check(int runs, Tally& tally) {
     const std::uint16_t stride = static_cast<std::uint16_t>(width + 2 * texture_frame);
     for (std::uint32_t k = 0; k < framed_texel_count(width, height); ++k) texels[k] = next() & 0x00FFFFFFu;
     const TextureLevel level{texels.data() + stride + texture_frame, width, height, stride};
-    const TextureData texture{&level, 1, Filter::bilinear, Wrap::repeat};
+    const TextureData texture{&level, 1, Filtered, Wrap::repeat};
     ObjectData object{};
     object.texture = 0;
     object.uv_frac_bits = 8;
@@ -108,10 +108,16 @@ void check(int runs, Tally& tally) {
 
 int spanlight::hal::app_main(Args /*args*/) {
   Tally tally;
-  check<16, PixelFormat::rgb565>(1000, tally);
-  check<24, PixelFormat::rgb565>(1000, tally);
-  check<16, PixelFormat::rgb888>(1000, tally);
-  check<24, PixelFormat::rgb888>(1000, tally);
+  for (const Filter filter : {Filter::bilinear, Filter::nearest}) {
+    auto each_storage = [&]<Filter Filtered>() {
+      check<16, PixelFormat::rgb565, Filtered>(500, tally);
+      check<24, PixelFormat::rgb565, Filtered>(500, tally);
+      check<16, PixelFormat::rgb888, Filtered>(500, tally);
+      check<24, PixelFormat::rgb888, Filtered>(500, tally);
+    };
+    if (filter == Filter::bilinear) each_storage.template operator()<Filter::bilinear>();
+    else each_storage.template operator()<Filter::nearest>();
+  }
   log_line(LogLine() << "kernel_check: " << tally.runs << " runs, " << tally.pixels << " pixels, " << tally.drawn << " drawn, "
                      << tally.differing << " differing");
   return tally.differing == 0 && tally.drawn > 0 ? 0 : 1;

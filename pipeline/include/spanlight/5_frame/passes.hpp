@@ -253,11 +253,13 @@ struct FusedKernel {
     for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR { any_light |= may_light(r, j, count); });
 #if defined(__ARM_ARCH_6M__)
     if constexpr (thumb1_shape) {
-      if (!any_light && surface.kind == SurfaceKind::bilinear_repeat && !(F.tinted && surface.tinted)) {
-        static_assert(offsetof(PixelRun<PR>, z) == 0 && offsetof(PixelRun<PR>, dz) == 4 && offsetof(PixelRun<PR>, u) == 8 &&
-                      offsetof(PixelRun<PR>, v) == 20 && sizeof(Stepped) == 12, "the Thumb-1 run reads these words");
-        if (count > 0) thumb1_fused_bilinear_run<F.depth_bits, F.format>(&r, thumb1, band.depth + i, band.depth + i + count);
-        return;
+      if (!any_light && !(F.tinted && surface.tinted)) {
+        if constexpr (F.bilinear) {
+          if (surface.kind == SurfaceKind::bilinear_repeat) return thumb1_run<true>(i, count, r);
+        }
+        if constexpr (F.nearest) {
+          if (surface.kind == SurfaceKind::nearest_repeat) return thumb1_run<false>(i, count, r);
+        }
       }
     }
 #endif
@@ -272,16 +274,25 @@ struct FusedKernel {
   // The shapes thumb1_run.hpp draws: 16- or 24-bit depth in halfwords or words, RGB565 or
   // RGB888, nothing watching the pixels.
   static constexpr bool thumb1_shape =
-      (F.format == PixelFormat::rgb565 || F.format == PixelFormat::rgb888) && F.bilinear && !sees_pixels<Hooks>() &&
+      (F.format == PixelFormat::rgb565 || F.format == PixelFormat::rgb888) && !sees_pixels<Hooks>() &&
       ((F.depth_bits == 16 && std::is_same_v<DepthT, std::uint16_t>) || (F.depth_bits == 24 && std::is_same_v<DepthT, std::uint32_t>));
 
   // The object's and the pass's words for the Thumb-1 run.
   void set_thumb1_object() {
     const TexelGrid& g = surface.grid;
+    const int down = surface.kind == SurfaceKind::bilinear_repeat ? 8 : 0;  // bilinear: the index and the weight
     auto colour = reinterpret_cast<std::uintptr_t>(band.color);
     if constexpr (F.depth_bits == 16 && F.format == PixelFormat::rgb565) colour -= reinterpret_cast<std::uintptr_t>(band.depth);
-    thumb1 = {colour, reinterpret_cast<std::uintptr_t>(band.depth), g.texels, g.stride, static_cast<std::uint32_t>(g.x_shift - 8),
-              static_cast<std::uint32_t>(g.y_shift - 8), red(ambient), blue(ambient), green(ambient), ambient != white};
+    thumb1 = {colour, reinterpret_cast<std::uintptr_t>(band.depth), g.texels, g.stride, static_cast<std::uint32_t>(g.x_shift - down),
+              static_cast<std::uint32_t>(g.y_shift - down), red(ambient), blue(ambient), green(ambient), ambient != white};
+  }
+
+  // A run of a repeating texture under a constant light, in Thumb-1.
+  template <bool Bilinear, int PR>
+  void thumb1_run(std::uint32_t i, std::int32_t count, const PixelRun<PR>& r) const {
+    static_assert(offsetof(PixelRun<PR>, z) == 0 && offsetof(PixelRun<PR>, dz) == 4 && offsetof(PixelRun<PR>, u) == 8 &&
+                  offsetof(PixelRun<PR>, v) == 20 && sizeof(Stepped) == 12, "the Thumb-1 run reads these words");
+    if (count > 0) thumb1_fused_run<F.depth_bits, F.format, Bilinear>(&r, thumb1, band.depth + i, band.depth + i + count);
   }
 #endif
 

@@ -1,8 +1,9 @@
 // Stage 5a on ARMv6-M (Cortex-M0/M0+): the fused pass's run for the commonest
-// shape written out in Thumb-1. A bilinear repeating texture, no projector
-// reaching the run, the light constant; 16- or 24-bit depth (16- or 32-bit
-// words), RGB565 or RGB888. Per pixel the depth test, the footprint, the lane
-// blend of texture.hpp, the modulate of colour.hpp and the store (pack565),
+// shape written out in Thumb-1. A bilinear or nearest repeating texture, no
+// projector reaching the run, the light constant; 16- or 24-bit depth (16- or
+// 32-bit words), RGB565 or RGB888. Per pixel the depth test, the texel or the
+// footprint and the lane blend of texture.hpp, the modulate of colour.hpp and
+// the store (pack565),
 // the very operations of the C++ kernel in the same order, so the bytes are
 // the same (firmware.kernel_check compares the two on random runs, and the
 // firmware tests every frame with the host's). GCC keeps the run's stepped values on the stack and
@@ -12,6 +13,7 @@
 
 #include <cstdint>
 
+#include "spanlight/inline.hpp"
 #include "spanlight/knobs.hpp"  // PixelFormat
 
 namespace spanlight {
@@ -25,7 +27,8 @@ struct Thumb1Object {
   std::uintptr_t depth;        //  4: the depth buffer's address
   const std::uint32_t* texels; //  8: texel (0, 0) of the repeating level
   std::int32_t stride;         // 12: words from a row to the next
-  std::uint32_t x_down, y_down;  // 16, 20: x_shift - 8, y_shift - 8 (index and weight bits)
+  std::uint32_t x_down, y_down;  // 16, 20: u >> x_down is the texel's column (nearest), or it << 8 | the
+                                 //         weight (bilinear, x_shift - 8); the same for v
   std::uint32_t light_r, light_b, light_g;  // 24, 28, 32: the constant light, 8-bit levels
   std::uint32_t lit;           // 36: 0 when the light is white (the surface itself)
   std::uint32_t lanes = 0x00FF00FFu, half = 0x00800080u, to5_bias = 0x03F603F6u, five_bits = 0x001F001Fu;  // 40..52
@@ -37,7 +40,7 @@ struct Thumb1Object {
 // (at least one pixel). The frame below the saved registers: 0 the depth pointer, 4 the
 // colour pointer, 8 the end, 12 ddu, 16 ddv, 20 fy, 24 column 0's greens, 28 the greens'
 // rows, 32..84 the Thumb1Object. u, du, v, dv, z, dz live in r8..r12 and lr.
-#define SPANLIGHT_THUMB1_RUN(COLOUR_START, DEPTH_LOAD, DEPTH_STORE, STEP, STORE)                                 \
+#define SPANLIGHT_THUMB1_RUN(COLOUR_START, DEPTH_LOAD, DEPTH_STORE, STEP, SAMPLE, STORE)                                 \
       ".syntax unified\n\t"                                                                                      \
       "push  {r4-r7, lr}\n\t"                                                                                    \
       "mov   r4, r8\n\t"                                                                                         \
@@ -97,6 +100,39 @@ struct Thumb1Object {
       /* ---- a pixel drawn */                                                                                   \
       "4:\n\t"                                                                                                   \
       DEPTH_STORE                                                                                                \
+      SAMPLE /* r0 red and blue (0x00RR00BB), r5 green, r6 0x00FF00FF */                                         \
+      /* The light (colour.hpp, modulate), unless white. */                                                      \
+      "ldr   r4, [sp, #68]\n\t"                                                                                  \
+      "cmp   r4, #0\n\t"                                                                                         \
+      "beq   2f\n\t"                                                                                             \
+      "uxth  r1, r0\n\t"                                                                                         \
+      "lsrs  r0, r0, #16\n\t"                                                                                    \
+      "ldr   r4, [sp, #56]\n\t"                                                                                  \
+      "muls  r0, r4, r0\n\t"                                                                                     \
+      "ldr   r4, [sp, #60]\n\t"                                                                                  \
+      "muls  r1, r4, r1\n\t"                                                                                     \
+      "lsls  r0, r0, #16\n\t"                                                                                    \
+      "orrs  r0, r1\n\t"  /* lane_products(light, surface) */                                                    \
+      "ldr   r1, [sp, #76]\n\t"                                                                                  \
+      "adds  r0, r0, r1\n\t"  /* t */                                                                            \
+      "lsrs  r1, r0, #8\n\t"                                                                                     \
+      "ands  r1, r6\n\t"                                                                                         \
+      "adds  r0, r0, r1\n\t"                                                                                     \
+      "lsrs  r0, r0, #8\n\t"                                                                                     \
+      "ands  r0, r6\n\t"  /* bytes_1_3(t + bytes_1_3(t)) */                                                      \
+      "ldr   r4, [sp, #64]\n\t"                                                                                  \
+      "muls  r5, r4, r5\n\t"                                                                                     \
+      "adds  r5, #128\n\t"                                                                                       \
+      "lsrs  r4, r5, #8\n\t"                                                                                     \
+      "adds  r5, r5, r4\n\t"                                                                                     \
+      "lsrs  r5, r5, #8\n\t"  /* mul255 */                                                                       \
+      "2:\n\t"                                                                                                   \
+      STORE /* r0 red and blue (0x00RR00BB), r5 green */                                                         \
+      "b     3b\n\t"                                                                                             \
+      ".syntax divided\n\t"
+
+// The samplers (texture.hpp): each leaves red and blue in r0, green in r5, 0x00FF00FF in r6.
+#define SPANLIGHT_THUMB1_SAMPLE_BILINEAR                                                                         \
       /* The footprint: u >> x_down = x0 << 8 | fx, the same for v. */                                           \
       "mov   r2, r8\n\t"                                                                                         \
       "ldr   r3, [sp, #48]\n\t"                                                                                  \
@@ -185,36 +221,25 @@ struct Thumb1Object {
       "movs  r4, #128\n\t"                                                                                       \
       "lsls  r4, r4, #8\n\t"                                                                                     \
       "adds  r5, r5, r4\n\t"                                                                                     \
-      "lsrs  r5, r5, #16\n\t"  /* green */                                                                       \
-      /* The light (colour.hpp, modulate), unless white. */                                                      \
-      "ldr   r4, [sp, #68]\n\t"                                                                                  \
-      "cmp   r4, #0\n\t"                                                                                         \
-      "beq   2f\n\t"                                                                                             \
-      "uxth  r1, r0\n\t"                                                                                         \
-      "lsrs  r0, r0, #16\n\t"                                                                                    \
-      "ldr   r4, [sp, #56]\n\t"                                                                                  \
-      "muls  r0, r4, r0\n\t"                                                                                     \
-      "ldr   r4, [sp, #60]\n\t"                                                                                  \
-      "muls  r1, r4, r1\n\t"                                                                                     \
-      "lsls  r0, r0, #16\n\t"                                                                                    \
-      "orrs  r0, r1\n\t"  /* lane_products(light, surface) */                                                    \
-      "ldr   r1, [sp, #76]\n\t"                                                                                  \
-      "adds  r0, r0, r1\n\t"  /* t */                                                                            \
-      "lsrs  r1, r0, #8\n\t"                                                                                     \
-      "ands  r1, r6\n\t"                                                                                         \
-      "adds  r0, r0, r1\n\t"                                                                                     \
-      "lsrs  r0, r0, #8\n\t"                                                                                     \
-      "ands  r0, r6\n\t"  /* bytes_1_3(t + bytes_1_3(t)) */                                                      \
-      "ldr   r4, [sp, #64]\n\t"                                                                                  \
-      "muls  r5, r4, r5\n\t"                                                                                     \
-      "adds  r5, #128\n\t"                                                                                       \
-      "lsrs  r4, r5, #8\n\t"                                                                                     \
-      "adds  r5, r5, r4\n\t"                                                                                     \
-      "lsrs  r5, r5, #8\n\t"  /* mul255 */                                                                       \
-      "2:\n\t"                                                                                                   \
-      STORE /* r0 red and blue (0x00RR00BB), r5 green */                                                         \
-      "b     3b\n\t"                                                                                             \
-      ".syntax divided\n\t"
+      "lsrs  r5, r5, #16\n\t"  /* green */
+#define SPANLIGHT_THUMB1_SAMPLE_NEAREST                                                                          \
+      /* The texel: u >> x_shift, v >> y_shift. */                                                               \
+      "mov   r2, r8\n\t"                                                                                         \
+      "ldr   r3, [sp, #48]\n\t"                                                                                  \
+      "lsrs  r2, r3\n\t"                                                                                         \
+      "mov   r5, r10\n\t"                                                                                        \
+      "ldr   r3, [sp, #52]\n\t"                                                                                  \
+      "lsrs  r5, r3\n\t"                                                                                         \
+      "ldr   r3, [sp, #44]\n\t"                                                                                  \
+      "muls  r5, r3, r5\n\t"                                                                                     \
+      "adds  r5, r5, r2\n\t"                                                                                     \
+      "lsls  r5, r5, #2\n\t"                                                                                     \
+      "ldr   r3, [sp, #40]\n\t"                                                                                  \
+      "ldr   r0, [r3, r5]\n\t"                                                                                   \
+      "ldr   r6, [sp, #72]\n\t"                                                                                  \
+      "lsrs  r5, r0, #8\n\t"                                                                                     \
+      "uxtb  r5, r5\n\t"  /* green */                                                                            \
+      "ands  r0, r6\n\t"  /* red and blue: colour_of */
 
 // The pieces that differ. Depth: 16 bits in halfwords or 24 in words. Colour: RGB565 over
 // 16-bit depth steps as the depth does (its offset at 32 is the pass's); otherwise the colour
@@ -255,27 +280,30 @@ struct Thumb1Object {
 #define SPANLIGHT_THUMB1_STORE888 \
   "ldr   r7, [sp, #0]\n\t" "ldr   r1, [sp, #4]\n\t" "strb  r5, [r1, #1]\n\t" "strb  r0, [r1, #2]\n\t" "lsrs  r0, r0, #16\n\t" "strb  r0, [r1]\n\t"
 
-[[gnu::naked, gnu::noinline]] inline void thumb1_run_z16_rgb565(const void*, const Thumb1Object*, void*, void*) {
-  __asm__ volatile(SPANLIGHT_THUMB1_RUN("", SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
-                                        SPANLIGHT_THUMB1_STEP_DEPTH(2), SPANLIGHT_THUMB1_STORE565_AT_OFFSET));
-}
-[[gnu::naked, gnu::noinline]] inline void thumb1_run_z24_rgb565(const void*, const Thumb1Object*, void*, void*) {
-  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_HALF), SPANLIGHT_THUMB1_DEPTH24_LOAD,
-                                        SPANLIGHT_THUMB1_DEPTH24_STORE,
-                                        SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(2), SPANLIGHT_THUMB1_STORE565));
-}
-[[gnu::naked, gnu::noinline]] inline void thumb1_run_z16_rgb888(const void*, const Thumb1Object*, void*, void*) {
-  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_THREE_HALVES),
-                                        SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
-                                        SPANLIGHT_THUMB1_STEP_DEPTH(2) SPANLIGHT_THUMB1_STEP_COLOUR(3), SPANLIGHT_THUMB1_STORE888));
-}
-[[gnu::naked, gnu::noinline]] inline void thumb1_run_z24_rgb888(const void*, const Thumb1Object*, void*, void*) {
-  __asm__ volatile(SPANLIGHT_THUMB1_RUN(SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_THREE_QUARTERS),
-                                        SPANLIGHT_THUMB1_DEPTH24_LOAD, SPANLIGHT_THUMB1_DEPTH24_STORE,
-                                        SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(3), SPANLIGHT_THUMB1_STORE888));
-}
+// One storage's two loops, bilinear and nearest.
+#define SPANLIGHT_THUMB1_LOOPS(NAME, COLOUR_START, DEPTH_LOAD, DEPTH_STORE, STEP, STORE)                                   \
+  [[gnu::naked, gnu::noinline]] inline void NAME##_bilinear(const void*, const Thumb1Object*, void*, void*) {                \
+    __asm__ volatile(SPANLIGHT_THUMB1_RUN(COLOUR_START, DEPTH_LOAD, DEPTH_STORE, STEP, SPANLIGHT_THUMB1_SAMPLE_BILINEAR, STORE)); \
+  }                                                                                                                          \
+  [[gnu::naked, gnu::noinline]] inline void NAME##_nearest(const void*, const Thumb1Object*, void*, void*) {                 \
+    __asm__ volatile(SPANLIGHT_THUMB1_RUN(COLOUR_START, DEPTH_LOAD, DEPTH_STORE, STEP, SPANLIGHT_THUMB1_SAMPLE_NEAREST, STORE)); \
+  }
+SPANLIGHT_THUMB1_LOOPS(thumb1_run_z16_rgb565, "", SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
+                       SPANLIGHT_THUMB1_STEP_DEPTH(2), SPANLIGHT_THUMB1_STORE565_AT_OFFSET)
+SPANLIGHT_THUMB1_LOOPS(thumb1_run_z24_rgb565, SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_HALF), SPANLIGHT_THUMB1_DEPTH24_LOAD,
+                       SPANLIGHT_THUMB1_DEPTH24_STORE, SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(2),
+                       SPANLIGHT_THUMB1_STORE565)
+SPANLIGHT_THUMB1_LOOPS(thumb1_run_z16_rgb888, SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_THREE_HALVES),
+                       SPANLIGHT_THUMB1_DEPTH16_LOAD, SPANLIGHT_THUMB1_DEPTH16_STORE,
+                       SPANLIGHT_THUMB1_STEP_DEPTH(2) SPANLIGHT_THUMB1_STEP_COLOUR(3), SPANLIGHT_THUMB1_STORE888)
+SPANLIGHT_THUMB1_LOOPS(thumb1_run_z24_rgb888, SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH(SPANLIGHT_THUMB1_THREE_QUARTERS),
+                       SPANLIGHT_THUMB1_DEPTH24_LOAD, SPANLIGHT_THUMB1_DEPTH24_STORE,
+                       SPANLIGHT_THUMB1_STEP_DEPTH(4) SPANLIGHT_THUMB1_STEP_COLOUR(3), SPANLIGHT_THUMB1_STORE888)
 
 #undef SPANLIGHT_THUMB1_RUN
+#undef SPANLIGHT_THUMB1_LOOPS
+#undef SPANLIGHT_THUMB1_SAMPLE_BILINEAR
+#undef SPANLIGHT_THUMB1_SAMPLE_NEAREST
 #undef SPANLIGHT_THUMB1_DEPTH16_LOAD
 #undef SPANLIGHT_THUMB1_DEPTH16_STORE
 #undef SPANLIGHT_THUMB1_DEPTH24_LOAD
@@ -291,15 +319,20 @@ struct Thumb1Object {
 #undef SPANLIGHT_THUMB1_THREE_HALVES
 #undef SPANLIGHT_THUMB1_THREE_QUARTERS
 
-// The loop for a pass's depth and colour storage (16-bit depth in halfwords, 24-bit in words):
-// pixels [depth, depth_end) of the run `run` (a PixelRun) of `object`.
-template <int DepthBits, PixelFormat Format>
-[[gnu::always_inline]] inline void thumb1_fused_bilinear_run(const void* run, const Thumb1Object& object, void* depth, void* depth_end) {
+// The loop for a pass's depth and colour storage (16-bit depth in halfwords, 24-bit in words)
+// and the sampler: pixels [depth, depth_end) of the run `run` (a PixelRun) of `object`.
+template <int DepthBits, PixelFormat Format, bool Bilinear>
+[[gnu::always_inline]] inline void thumb1_fused_run(const void* run, const Thumb1Object& object, void* depth, void* depth_end) {
   static_assert((DepthBits == 16 || DepthBits == 24) && (Format == PixelFormat::rgb565 || Format == PixelFormat::rgb888));
-  if constexpr (DepthBits == 16 && Format == PixelFormat::rgb565) thumb1_run_z16_rgb565(run, &object, depth, depth_end);
-  else if constexpr (DepthBits == 24 && Format == PixelFormat::rgb565) thumb1_run_z24_rgb565(run, &object, depth, depth_end);
-  else if constexpr (DepthBits == 16) thumb1_run_z16_rgb888(run, &object, depth, depth_end);
-  else thumb1_run_z24_rgb888(run, &object, depth, depth_end);
+  constexpr bool z16 = DepthBits == 16, rgb565 = Format == PixelFormat::rgb565;
+  auto loop = [&](auto bilinear, auto nearest) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    if constexpr (Bilinear) bilinear(run, &object, depth, depth_end);
+    else nearest(run, &object, depth, depth_end);
+  };
+  if constexpr (z16 && rgb565) loop(thumb1_run_z16_rgb565_bilinear, thumb1_run_z16_rgb565_nearest);
+  else if constexpr (rgb565) loop(thumb1_run_z24_rgb565_bilinear, thumb1_run_z24_rgb565_nearest);
+  else if constexpr (z16) loop(thumb1_run_z16_rgb888_bilinear, thumb1_run_z16_rgb888_nearest);
+  else loop(thumb1_run_z24_rgb888_bilinear, thumb1_run_z24_rgb888_nearest);
 }
 #endif
 

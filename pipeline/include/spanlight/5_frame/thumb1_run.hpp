@@ -131,15 +131,13 @@ struct Thumb1Object {
       "b     3b\n\t"                                                                                             \
       ".syntax divided\n\t"
 
+// u >> x_down in r2, v >> y_down in r5.
+#define SPANLIGHT_THUMB1_SHIFTED_UV \
+  "mov   r2, r8\n\t" "ldr   r3, [sp, #48]\n\t" "lsrs  r2, r3\n\t" "mov   r5, r10\n\t" "ldr   r3, [sp, #52]\n\t" "lsrs  r5, r3\n\t"
 // The samplers (texture.hpp): each leaves red and blue in r0, green in r5, 0x00FF00FF in r6.
 #define SPANLIGHT_THUMB1_SAMPLE_BILINEAR                                                                         \
       /* The footprint: u >> x_down = x0 << 8 | fx, the same for v. */                                           \
-      "mov   r2, r8\n\t"                                                                                         \
-      "ldr   r3, [sp, #48]\n\t"                                                                                  \
-      "lsrs  r2, r3\n\t"                                                                                         \
-      "mov   r5, r10\n\t"                                                                                        \
-      "ldr   r3, [sp, #52]\n\t"                                                                                  \
-      "lsrs  r5, r3\n\t"                                                                                         \
+      SPANLIGHT_THUMB1_SHIFTED_UV                                                                                \
       "lsrs  r6, r5, #8\n\t"  /* y0 */                                                                           \
       "uxtb  r5, r5\n\t"      /* fy */                                                                           \
       "str   r5, [sp, #20]\n\t"                                                                                  \
@@ -224,12 +222,7 @@ struct Thumb1Object {
       "lsrs  r5, r5, #16\n\t"  /* green */
 #define SPANLIGHT_THUMB1_SAMPLE_NEAREST                                                                          \
       /* The texel: u >> x_shift, v >> y_shift. */                                                               \
-      "mov   r2, r8\n\t"                                                                                         \
-      "ldr   r3, [sp, #48]\n\t"                                                                                  \
-      "lsrs  r2, r3\n\t"                                                                                         \
-      "mov   r5, r10\n\t"                                                                                        \
-      "ldr   r3, [sp, #52]\n\t"                                                                                  \
-      "lsrs  r5, r3\n\t"                                                                                         \
+      SPANLIGHT_THUMB1_SHIFTED_UV                                                                                \
       "ldr   r3, [sp, #44]\n\t"                                                                                  \
       "muls  r5, r3, r5\n\t"                                                                                     \
       "adds  r5, r5, r2\n\t"                                                                                     \
@@ -304,6 +297,7 @@ SPANLIGHT_THUMB1_LOOPS(thumb1_run_z24_rgb888, SPANLIGHT_THUMB1_COLOUR_FROM_DEPTH
 #undef SPANLIGHT_THUMB1_LOOPS
 #undef SPANLIGHT_THUMB1_SAMPLE_BILINEAR
 #undef SPANLIGHT_THUMB1_SAMPLE_NEAREST
+#undef SPANLIGHT_THUMB1_SHIFTED_UV
 #undef SPANLIGHT_THUMB1_DEPTH16_LOAD
 #undef SPANLIGHT_THUMB1_DEPTH16_STORE
 #undef SPANLIGHT_THUMB1_DEPTH24_LOAD

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 #include <random>
+#include <initializer_list>
+#include <utility>
 
 #include "fixedpoint/bits.hpp"
 
@@ -132,4 +134,26 @@ TEST_CASE("64-bit shifts by less than 32 from 32-bit operations equal the native
     REQUIRE(fixedpoint::widened_shifted_left(0xFFFFFFFFu, s) == std::uint64_t{0xFFFFFFFFu} << s);
   }
   STATIC_REQUIRE(fixedpoint::high_word_shifted_left(1, 63) == 0x80000000u);
+}
+
+TEST_CASE("normalised_pair gives the top word of x and y shifted by clz64(x)", "[bits][shift]") {
+  std::mt19937_64 random(20261206);
+  const auto expected = [](std::uint64_t x, std::uint64_t y) {
+    const int n = __builtin_clzll(x);
+    return std::pair{static_cast<std::uint32_t>((x << n) >> 32), static_cast<std::uint32_t>((y << n) >> 32)};
+  };
+  for (int i = 0; i < random_cases; ++i) {
+    const std::uint64_t x = (random() >> (random() % 64)) | 1u;  // every magnitude, never 0
+    const std::uint64_t y = random() % 4 == 0 ? x : (x == ~0ull ? random() : random() % (x + 1));  // y <= x, x itself too
+    const fixedpoint::NormalisedPair p = fixedpoint::normalised_pair(x, y);
+    if (std::pair{p.x_top, p.y_top} != expected(x, y)) FAIL("x = " << x << ", y = " << y);
+  }
+  // Where the leading one crosses the word boundary, and the ends.
+  for (const std::uint64_t x : std::initializer_list<std::uint64_t>{1, 0xFFFFFFFF, 0x100000000, 0x1FFFFFFFF, 0x80000000'00000000, ~std::uint64_t{0}}) {
+    for (const std::uint64_t y : {std::uint64_t{0}, std::uint64_t{1}, x / 3, x - 1, x}) {
+      const fixedpoint::NormalisedPair p = fixedpoint::normalised_pair(x, y);
+      CHECK(std::pair{p.x_top, p.y_top} == expected(x, y));
+    }
+  }
+  STATIC_REQUIRE(fixedpoint::normalised_pair(0x100000000ull, 0x80000000ull).y_top == 0x40000000u);
 }

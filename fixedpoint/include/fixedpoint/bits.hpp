@@ -212,16 +212,16 @@ constexpr std::int64_t mul_shift_wide(std::int64_t a, std::int32_t b, int s) {
 // Cortex-M a 64-bit shift by a run-time amount is about a dozen instructions
 // (a libgcc call on ARMv6-M) because it must also handle amounts of 32 and more.
 // The low word of x >> s, 0 <= s < 32.
-constexpr std::uint32_t low_word_shifted_right(std::uint64_t x, int s) {
+[[gnu::always_inline]] constexpr std::uint32_t low_word_shifted_right(std::uint64_t x, int s) {
   const auto lo = static_cast<std::uint32_t>(x), hi = static_cast<std::uint32_t>(x >> 32);
   return (lo >> s) | ((hi << 1) << (31 - s));  // (hi << 1) << (31 - s): hi << (32 - s) without UB at s = 0
 }
 // Bits s .. s + 31 of x, 0 <= s < 64 (above bit 63: zeros): a shift that keeps one word.
-constexpr std::uint32_t word_shifted_right(std::uint64_t x, int s) {
+[[gnu::always_inline]] constexpr std::uint32_t word_shifted_right(std::uint64_t x, int s) {
   return s < 32 ? low_word_shifted_right(x, s) : static_cast<std::uint32_t>(x >> 32) >> (s - 32);
 }
 // floor(x / 2^s), 0 <= s < 64, for a result that fits int32: the same without a 64-bit shift.
-constexpr std::int32_t floor_shifted_right(std::int64_t x, int s) {
+[[gnu::always_inline]] constexpr std::int32_t floor_shifted_right(std::int64_t x, int s) {
   const auto u = static_cast<std::uint64_t>(x);
   return s < 32 ? static_cast<std::int32_t>(low_word_shifted_right(u, s))
                 : static_cast<std::int32_t>(static_cast<std::uint32_t>(u >> 32)) >> (s - 32);  // arithmetic: floor
@@ -239,6 +239,24 @@ constexpr std::uint64_t widened_shifted_left(std::uint32_t x, int s) {
 constexpr std::uint32_t high_word_shifted_left(std::uint64_t x, int n) {
   const auto lo = static_cast<std::uint32_t>(x), hi = static_cast<std::uint32_t>(x >> 32);
   return n >= 32 ? lo << (n - 32) : (hi << n) | ((lo >> 1) >> (31 - n));
+}
+
+// The high words of x << n and y << n for n = clz64(x), x > 0, y <= x: x's 32 bits from its
+// leading one down and y's at the same places. One 32-bit count of the word that holds the
+// leading one, where clz64 and two 64-bit shifts are a __clzdi2 call and two of
+// high_word_shifted_left on ARMv6-M.
+struct NormalisedPair {
+  std::uint32_t x_top, y_top;
+};
+constexpr NormalisedPair normalised_pair(std::uint64_t x, std::uint64_t y) {
+  const auto xh = static_cast<std::uint32_t>(x >> 32), xl = static_cast<std::uint32_t>(x);
+  const auto yh = static_cast<std::uint32_t>(y >> 32), yl = static_cast<std::uint32_t>(y);
+  if (xh == 0) {  // n = 32 + clz32(xl); y <= x has no high word either
+    const int n = clz32(xl);
+    return {xl << n, yl << n};
+  }
+  const int n = clz32(xh);
+  return {(xh << n) | ((xl >> 1) >> (31 - n)), (yh << n) | ((yl >> 1) >> (31 - n))};
 }
 
 // x / 2^s rounded to nearest, ties away from zero (so it is odd in x), for

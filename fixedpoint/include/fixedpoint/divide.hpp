@@ -97,7 +97,7 @@ struct FloorDivisor {
   }
 
   // |n| / d, exactly: q0 = floor(|n| y) <= |n| / d and |n| / d - q0 < 2^31 * 2^-28.9 + 1 < 6.
-  constexpr std::uint32_t unsigned_quotient(std::uint32_t n) const {
+  [[gnu::always_inline]] constexpr std::uint32_t unsigned_quotient(std::uint32_t n) const {
     if constexpr (has_divide_instruction) {
       return n / d;
     } else {

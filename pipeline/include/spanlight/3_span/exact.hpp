@@ -156,10 +156,8 @@ struct RowInterpolation {
     }
     // Both cut to the 32 bits below den's leading one (den < 2^43, so n >= 21);
     // 1/den_top is then 2^62 / den_top and gamma the product's high word.
-    const int n = fixedpoint::clz64(den);
-    const std::uint32_t den_top = fixedpoint::high_word_shifted_left(den, n);
-    const std::uint32_t num_top = fixedpoint::high_word_shifted_left(num, n);
-    const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(num_top, divide.of_normalised(den_top)) >> 32);  // Q0.30
+    const fixedpoint::NormalisedPair top = fixedpoint::normalised_pair(den, num);
+    const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(top.y_top, divide.of_normalised(top.x_top)) >> 32);  // Q0.30
     for (int k = 0; k < components; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
   }
 };

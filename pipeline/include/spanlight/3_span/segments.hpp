@@ -127,13 +127,20 @@ constexpr QuadraticSteps quadratic_steps(std::int32_t d1, std::int32_t d2, int k
     const std::uint32_t step_num = (static_cast<std::uint32_t>(d1) << k) + dd * (1u - (1u << (k - 1)));
     return {step_num << (shift - s), dd << (shift - s + 1)};
   }
-  // Else divided by 2^(s - shift), rounded to nearest, in 64 bits (|numerators| < 2^(31 + k + 1) <= 2^38).
-  const std::int64_t dd = std::int64_t{d2} - d1;
-  const std::int64_t step_num = (std::int64_t{d1} << k) + dd * (1 - (std::int64_t{1} << (k - 1)));
+  // Else divided by 2^(s - shift), rounded to nearest, in 64 bits (|numerators| < 2^(31 + k + 1) <= 2^38),
+  // from 32-bit pieces: |d2 - d1| < 2^31 fits a word, d1 2^k is d1's word shifted into two, the
+  // product is one mul_s32, and the shifts (right <= 2k - 1 <= 11) keep one word of the result:
+  // on ARMv6-M no libgcc shift or multiply.
+  const auto dd = static_cast<std::int32_t>(std::int64_t{d2} - d1);
+  const std::int64_t d1_shifted = static_cast<std::int64_t>(
+      (std::uint64_t{static_cast<std::uint32_t>(d1 >> (32 - k))} << 32) | (static_cast<std::uint32_t>(d1) << k));  // d1 2^k, 1 <= k < 32
+  const std::int64_t step_num = d1_shifted + fixedpoint::mul_s32(dd, 1 - (std::int32_t{1} << (k - 1)));
   const int right = s - shift;  // >= 1
-  const std::int64_t step = (step_num + (std::int64_t{1} << (right - 1))) >> right;
-  const std::int64_t curve = right == 1 ? dd : (dd + (std::int64_t{1} << (right - 2))) >> (right - 1);
-  return {static_cast<std::uint32_t>(step), static_cast<std::uint32_t>(curve)};
+  const std::uint32_t step = fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(step_num + (std::int32_t{1} << (right - 1))), right);
+  const std::uint32_t curve =
+      right == 1 ? static_cast<std::uint32_t>(dd)
+                 : static_cast<std::uint32_t>(fixedpoint::floor_shifted_right(std::int64_t{dd} + (std::int32_t{1} << (right - 2)), right - 1));
+  return {step, curve};
 }
 
 }  // namespace spanlight

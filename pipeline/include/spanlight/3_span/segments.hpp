@@ -32,15 +32,19 @@ namespace spanlight {
 // short of the next multiple (span_test checks every x of the range).
 constexpr int divide_by_48(int x) { return static_cast<int>((static_cast<std::uint32_t>(x) * 43691u) >> 21); }
 
-// floor(log2 x) for x > 0.
-constexpr int floor_log2(std::uint64_t x) { return fixedpoint::bit_length(x) - 1; }
+// floor(log2 x) for x > 0, from the word that holds the leading one (on ARMv6-M one __clzsi2,
+// where a 64-bit count is a __clzdi2 call around it).
+constexpr int floor_log2(std::uint64_t x) {
+  const auto hi = static_cast<std::uint32_t>(x >> 32);
+  return hi != 0 ? 63 - fixedpoint::clz32(hi) : 31 - fixedpoint::clz32(static_cast<std::uint32_t>(x));
+}
 
 // log2 in sixteenths of an octave, bounded from below and above: the four bits
 // after the leading one pick 16 log2(1 + m/16), rounded down, or 16 log2(1 + (m+1)/16), rounded up.
 inline constexpr std::uint8_t log2_16_floor_table[16] = {0, 1, 2, 3, 5, 6, 7, 8, 9, 10, 11, 12, 12, 13, 14, 15};
 inline constexpr std::uint8_t log2_16_ceil_table[16] = {2, 3, 4, 6, 7, 8, 9, 10, 11, 12, 13, 13, 14, 15, 16, 16};
 constexpr unsigned top_four_bits_after_leading_one(std::uint64_t x, int e) {
-  return static_cast<unsigned>(e >= 4 ? (x >> (e - 4)) & 15u : (x << (4 - e)) & 15u);
+  return (e >= 4 ? fixedpoint::word_shifted_right(x, e - 4) : static_cast<std::uint32_t>(x) << (4 - e)) & 15u;
 }
 constexpr int log2_16_down(std::uint64_t x) {
   const int e = floor_log2(x);
@@ -48,9 +52,8 @@ constexpr int log2_16_down(std::uint64_t x) {
 }
 constexpr int log2_16_up(std::uint64_t x) {
   const int e = floor_log2(x);
-  const unsigned m = top_four_bits_after_leading_one(x, e);
-  const bool power_of_two = m == 0 && (e < 4 || (x & ((std::uint64_t{1} << (e - 4)) - 1u)) == 0);
-  return 16 * e + (power_of_two ? 0 : log2_16_ceil_table[m]);
+  const bool power_of_two = (x & (x - 1)) == 0;  // log2 exact
+  return 16 * e + (power_of_two ? 0 : log2_16_ceil_table[top_four_bits_after_leading_one(x, e)]);
 }
 
 // The segment lengths of one group along one span.

@@ -185,10 +185,19 @@ constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int height
 // E >> area_shift < 2^32 and area_rcp <= 2^31, so one 32x32 product.
 constexpr std::int32_t barycentric(const TriangleSetup& t, std::int64_t e) {
   if (e <= 0) return 0;
-  const std::uint64_t e_norm = t.area_shift >= 0 ? static_cast<std::uint64_t>(e) >> t.area_shift
-                                                 : static_cast<std::uint64_t>(e) << -t.area_shift;
-  if (e_norm >> 32) return 1 << 30;  // outside, beyond the far edge: clamp
-  const std::uint64_t lambda = fixedpoint::mul_u32(static_cast<std::uint32_t>(e_norm), t.area_rcp) >> 32;
+  // e_norm = e >> area_shift (area_shift in [-31, 14]: D < 2^46) in one word, from 32-bit shifts;
+  // beyond a word it is outside, beyond the far edge: clamp.
+  const auto hi = static_cast<std::uint32_t>(static_cast<std::uint64_t>(e) >> 32), lo = static_cast<std::uint32_t>(e);
+  std::uint32_t e_norm;
+  if (t.area_shift >= 0) {
+    if ((hi >> t.area_shift) != 0) return 1 << 30;
+    e_norm = fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(e), t.area_shift);
+  } else {
+    const int left = -t.area_shift;  // 1 .. 31
+    if (hi != 0 || (lo >> (32 - left)) != 0) return 1 << 30;
+    e_norm = lo << left;
+  }
+  const auto lambda = static_cast<std::uint32_t>(fixedpoint::mul_u32(e_norm, t.area_rcp) >> 32);
   return lambda > (1u << 30) ? (1 << 30) : static_cast<std::int32_t>(lambda);
 }
 

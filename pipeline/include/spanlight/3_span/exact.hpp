@@ -67,9 +67,9 @@ constexpr Weights perspective_weights(const TriangleSetup& t, const ScreenWeight
   const std::uint32_t sum = rho0 + rho1 + rho2;  // < 3 * 2^30
   if (sum == 0) return {s.l1, s.l2, 0};
   const fixedpoint::Reciprocal rcp = divide.of(sum);
-  const int shift = rcp.shift - 30;  // >= 32 because sum < 2^32
-  return {static_cast<std::int32_t>(fixedpoint::mul_u32(rho1, rcp.mantissa) >> shift),
-          static_cast<std::int32_t>(fixedpoint::mul_u32(rho2, rcp.mantissa) >> shift), sum};
+  const int shift = rcp.shift - 30;  // >= 32 because sum < 2^32; beta <= 2^30 fits a word
+  return {static_cast<std::int32_t>(fixedpoint::word_shifted_right(fixedpoint::mul_u32(rho1, rcp.mantissa), shift)),
+          static_cast<std::int32_t>(fixedpoint::word_shifted_right(fixedpoint::mul_u32(rho2, rcp.mantissa), shift)), sum};
 }
 
 // One group's values at a point: the surface's (u, v) or a projector's

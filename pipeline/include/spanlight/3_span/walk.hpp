@@ -101,15 +101,15 @@ struct PixelRun {
 
 // The texel distance between two points of a group, 8 fraction bits (the largest component's).
 constexpr std::uint64_t texel_delta8(const GroupPoint& a, const GroupPoint& b, int group, const SpanControl& c) {
-  std::uint64_t d = 0;
+  std::uint32_t d = 0;  // |b - a| < 2^32 for int32 values: a word
   const int components = group == uv_group ? 2 : 3;  // r/q is read at the shadow map's texels: as fine as the image's
   for (int k = 0; k < components; ++k) {
     const std::int64_t delta = std::int64_t{b.value[k]} - a.value[k];
-    const std::uint64_t m = static_cast<std::uint64_t>(delta < 0 ? -delta : delta);
+    const auto m = static_cast<std::uint32_t>(delta < 0 ? -delta : delta);
     if (m > d) d = m;
   }
   if (group == uv_group) return d >> (c.uv_frac_bits - 8);  // uv_frac_bits >= 8
-  return (d * c.projector_texels[group]) >> (proj_frac_bits - 8);  // d < 2^32, size <= 2^12
+  return fixedpoint::mul_u32_u16(d, c.projector_texels[group]) >> (proj_frac_bits - 8);  // size <= 2^12
 }
 
 // Everything a group's walk needs of the triangle to evaluate it exactly at a column.

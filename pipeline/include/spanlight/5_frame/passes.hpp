@@ -140,7 +140,7 @@ template <int P>
 [[gnu::always_inline]] inline bool may_light(const PixelRun<P>& r, int j, std::int32_t count) {
   if (!r.front[j]) return false;
   const auto last = static_cast<std::uint32_t>(count - 1);
-  auto outside = [&](const Stepped& x) {
+  auto outside = [&](const Stepped& x) SPANLIGHT_LAMBDA_INLINE_ATTR {
     const auto a = static_cast<std::int32_t>(x.value), b = after(x, last);
     return (a < 0 && b < 0) || (a > proj_one && b > proj_one);
   };

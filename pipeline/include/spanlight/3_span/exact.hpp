@@ -142,23 +142,23 @@ struct RowInterpolation {
 
   // The point at column x in [a, b]; its denominator is (b - x) E_a + (x - a) E_b,
   // the divisor up to the row's constant (segment lengths compare ratios only). Fills the first
-  // `components` values (2 for uv, 3 for a projector's s, t, r).
-  template <typename Divide>
-  constexpr void at(std::int32_t x, const Divide& divide, int components, GroupPoint& out) const {
+  // Components values (2 for uv, 3 for a projector's s, t, r).
+  template <int Components, typename Divide>
+  constexpr void at(std::int32_t x, const Divide& divide, GroupPoint& out) const {
     const auto before = static_cast<std::uint32_t>(x - a), after = static_cast<std::uint32_t>(length) - before;
     const std::uint64_t num = fixedpoint::mul_u32_u16(e_b, before);  // < 2^12 * 2^31 (spans < 2^13 px)
     const std::uint64_t den = num + fixedpoint::mul_u32_u16(e_a, after);
     out.denominator = static_cast<std::int64_t>(den);
     out.front = true;
     if (after == 0 || before == 0) {  // the ends themselves, exactly
-      for (int k = 0; k < components; ++k) out.value[k] = after == 0 ? f_a[k] + df[k] : f_a[k];
+      for (int k = 0; k < Components; ++k) out.value[k] = after == 0 ? f_a[k] + df[k] : f_a[k];
       return;
     }
     // Both cut to the 32 bits below den's leading one (den < 2^43, so n >= 21);
     // 1/den_top is then 2^62 / den_top and gamma the product's high word.
     const fixedpoint::NormalisedPair top = fixedpoint::normalised_pair(den, num);
     const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(top.y_top, divide.of_normalised(top.x_top)) >> 32);  // Q0.30
-    for (int k = 0; k < components; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
+    for (int k = 0; k < Components; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
   }
 };
 

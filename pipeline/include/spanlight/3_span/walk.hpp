@@ -130,10 +130,12 @@ struct GroupSource {
 enum class GroupMode : std::uint8_t { interpolated, constant, per_pixel };
 
 // One group along a span: its stepping state from the current pixel, and the
-// exact point that ends the segment.
+// exact point that ends the segment. Components: 2 for uv, 3 for a projector's
+// s, t, r (a constant, so the per-component loops unroll).
+template <int Components>
 struct GroupSpan {
+  static constexpr int components = Components;
   Stepped value[3];
-  int components;            // 2 for uv, 3 for a projector's s, t, r
   bool front;
   GroupMode mode;
   std::int32_t segment_end;  // the column of the next exact point (c1 + 1: none before the span ends)
@@ -148,7 +150,6 @@ struct GroupSpan {
   constexpr void start(const GroupSource<P, Divide>& src, int group, const SpanControl& c, const Weights& w0,
                        const Weights& w1, std::int32_t c0, std::int32_t c1) {
     scale = group == uv_group ? *c.uv : StepScale{{0, 0, 0}, {0, 0, 0}, c.projector_texel_bits[group]};
-    components = group == uv_group ? 2 : 3;
     GroupPoint first;
     point_from(src, group, w0, first);
     if (c0 == c1) {
@@ -246,10 +247,10 @@ struct GroupSpan {
     while ((std::int32_t{1} << k) > left) --k;
     segment_end = column + (std::int32_t{1} << k);
     if (segment_end == c1) end = last;
-    else row.at(segment_end, divide, components, end);
+    else row.template at<components>(segment_end, divide, end);
     if (k == 0) return;  // one pixel: nothing steps
     GroupPoint middle;
-    row.at(column + (std::int32_t{1} << (k - 1)), divide, components, middle);
+    row.template at<components>(column + (std::int32_t{1} << (k - 1)), divide, middle);
     set_steps(exact_start, middle, end, k);
   }
 
@@ -263,8 +264,8 @@ struct GroupSpan {
     const std::int32_t start = c1 - (std::int32_t{1} << k);
     if (start == column || start < planner.a || planner.length_log2_at(start) < k) return false;
     GroupPoint first, middle;
-    row.at(start, divide, components, first);
-    row.at(start + (std::int32_t{1} << (k - 1)), divide, components, middle);
+    row.template at<components>(start, divide, first);
+    row.template at<components>(start + (std::int32_t{1} << (k - 1)), divide, middle);
     end = last;
     segment_end = c1;
     set_steps(first.value, middle, last, k);
@@ -310,8 +311,8 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
     z_exact = run.z > control.z_limit || z_end < 0 || z_end > std::int64_t{control.z_limit};
   }
 
-  GroupSpan uv;
-  GroupSpan projector[projector_slots(PS)];
+  GroupSpan<2> uv;
+  GroupSpan<3> projector[projector_slots(PS)];
   const int j0 = needs.projector_begin, j1 = needs.projector_end;
   if constexpr (UV || Projectors) {
     const ScreenWeights s1 = screen_weights(t, t.edge[1].value_at(c1), t.edge[2].value_at(c1));
@@ -340,7 +341,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
     }
     if constexpr (Projectors) {
       for_each_projector<PS>(j0, j1, [&](int j) {
-        const GroupSpan& g = projector[j];
+        const GroupSpan<3>& g = projector[j];
         if (g.segment_end < run_end) run_end = g.segment_end;
         copy_stepped(run.s[j], g.value[0]);
         copy_stepped(run.t[j], g.value[1]);
@@ -382,7 +383,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
     }
     if constexpr (Projectors) {
       for_each_projector<PS>(j0, j1, [&](int j) {
-        GroupSpan& g = projector[j];
+        GroupSpan<3>& g = projector[j];
         if (run_end == g.segment_end) {
           g.arrive(src, j, run_end, c1);
         } else {

@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
-#include <random>
 #include <initializer_list>
+#include <random>
 #include <utility>
 
 #include "fixedpoint/bits.hpp"

@@ -118,8 +118,8 @@ TEST_CASE("64-bit shifts by less than 32 from 32-bit operations equal the native
     const std::uint64_t x = random() >> (random() % 64);  // every magnitude
     const int s = static_cast<int>(random() % 32);
     if (fixedpoint::low_word_shifted_right(x, s) != static_cast<std::uint32_t>(x >> s)) FAIL("x >> s at x = " << x << ", s = " << s);
-    const auto w = static_cast<std::uint32_t>(x);
-    if (fixedpoint::widened_shifted_left(w, s) != std::uint64_t{w} << s) FAIL("x << s at x = " << w << ", s = " << s);
+    const auto w = static_cast<std::int32_t>(static_cast<std::uint32_t>(x));  // either sign
+    if (fixedpoint::widened_shifted_left(w, s) != std::int64_t{w} * (std::int64_t{1} << s)) FAIL("x 2^s at x = " << w << ", s = " << s);
     if (x != 0) {
       const int n = fixedpoint::clz64(x);
       if (fixedpoint::high_word_shifted_left(x, n) != static_cast<std::uint32_t>((x << n) >> 32))
@@ -131,7 +131,8 @@ TEST_CASE("64-bit shifts by less than 32 from 32-bit operations equal the native
   }
   for (const int s : {0, 1, 31}) {  // the ends of the range, where a naive hi << (32 - s) would be undefined
     REQUIRE(fixedpoint::low_word_shifted_right(0xFFFFFFFFFFFFFFFFull, s) == static_cast<std::uint32_t>(0xFFFFFFFFFFFFFFFFull >> s));
-    REQUIRE(fixedpoint::widened_shifted_left(0xFFFFFFFFu, s) == std::uint64_t{0xFFFFFFFFu} << s);
+    for (const std::int32_t w : {INT32_MIN, -1, INT32_MAX})
+      REQUIRE(fixedpoint::widened_shifted_left(w, s) == std::int64_t{w} * (std::int64_t{1} << s));
   }
   STATIC_REQUIRE(fixedpoint::high_word_shifted_left(1, 63) == 0x80000000u);
 }

@@ -230,13 +230,15 @@ constexpr std::int64_t mul_shift_wide(std::int64_t a, std::int32_t b, int s) {
 // __clzsi2 alone, where bit_length's 64-bit count goes through __clzdi2).
 constexpr int bit_length32(std::uint32_t x) { return x == 0 ? 0 : 32 - clz32(x); }
 
-// x << s as a 64-bit value, 0 <= s < 32.
-constexpr std::uint64_t widened_shifted_left(std::uint32_t x, int s) {
-  return (std::uint64_t{(x >> 1) >> (31 - s)} << 32) | (x << s);
+// x 2^s as a 64-bit value, for any int32 x and 0 <= s < 32: the low word is x's shifted, the
+// high word floor(x / 2^(32 - s)), the bits shifted out with the sign filling in.
+[[gnu::always_inline]] constexpr std::int64_t widened_shifted_left(std::int32_t x, int s) {
+  const auto hi = static_cast<std::uint32_t>((x >> 1) >> (31 - s));  // arithmetic shifts: (x >> 1) >> 31 at s = 0
+  return static_cast<std::int64_t>((std::uint64_t{hi} << 32) | (static_cast<std::uint32_t>(x) << s));
 }
 
 // The high word of x << n, 0 <= n < 64 (with n = clz64(x): x's top 32 significant bits).
-constexpr std::uint32_t high_word_shifted_left(std::uint64_t x, int n) {
+[[gnu::always_inline]] constexpr std::uint32_t high_word_shifted_left(std::uint64_t x, int n) {
   const auto lo = static_cast<std::uint32_t>(x), hi = static_cast<std::uint32_t>(x >> 32);
   return n >= 32 ? lo << (n - 32) : (hi << n) | ((lo >> 1) >> (31 - n));
 }
@@ -249,14 +251,9 @@ struct NormalisedPair {
   std::uint32_t x_top, y_top;
 };
 constexpr NormalisedPair normalised_pair(std::uint64_t x, std::uint64_t y) {
-  const auto xh = static_cast<std::uint32_t>(x >> 32), xl = static_cast<std::uint32_t>(x);
-  const auto yh = static_cast<std::uint32_t>(y >> 32), yl = static_cast<std::uint32_t>(y);
-  if (xh == 0) {  // n = 32 + clz32(xl); y <= x has no high word either
-    const int n = clz32(xl);
-    return {xl << n, yl << n};
-  }
-  const int n = clz32(xh);
-  return {(xh << n) | ((xl >> 1) >> (31 - n)), (yh << n) | ((yl >> 1) >> (31 - n))};
+  const auto xh = static_cast<std::uint32_t>(x >> 32);
+  const int n = xh != 0 ? clz32(xh) : 32 + clz32(static_cast<std::uint32_t>(x));  // clz64(x)
+  return {high_word_shifted_left(x, n), high_word_shifted_left(y, n)};
 }
 
 // x / 2^s rounded to nearest, ties away from zero (so it is odd in x), for

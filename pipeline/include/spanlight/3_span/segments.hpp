@@ -135,9 +135,7 @@ constexpr QuadraticSteps quadratic_steps(std::int32_t d1, std::int32_t d2, int k
   // product is one mul_s32, and the shifts (right <= 2k - 1 <= 11) keep one word of the result:
   // on ARMv6-M no libgcc shift or multiply.
   const auto dd = static_cast<std::int32_t>(std::int64_t{d2} - d1);
-  const std::int64_t d1_shifted = static_cast<std::int64_t>(
-      (std::uint64_t{static_cast<std::uint32_t>(d1 >> (32 - k))} << 32) | (static_cast<std::uint32_t>(d1) << k));  // d1 2^k, 1 <= k < 32
-  const std::int64_t step_num = d1_shifted + fixedpoint::mul_s32(dd, 1 - (std::int32_t{1} << (k - 1)));
+  const std::int64_t step_num = fixedpoint::widened_shifted_left(d1, k) + fixedpoint::mul_s32(dd, 1 - (std::int32_t{1} << (k - 1)));  // 1 <= k < 32
   const int right = s - shift;  // >= 1
   const std::uint32_t step = fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(step_num + (std::int32_t{1} << (right - 1))), right);
   const std::uint32_t curve =

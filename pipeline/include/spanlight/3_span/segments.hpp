@@ -101,9 +101,11 @@ struct SegmentPlanner {
   }
 
   // log2 of the segment that starts at column x.
-  constexpr int length_log2_at(std::int32_t x) const {
+  constexpr int length_log2_at(std::int32_t x) const { return fixed_log2 >= 0 ? fixed_log2 : length_log2_at(x, den(x)); }
+  // The same where den(x) is known: RowInterpolation::at's denominator at x is den(x), the same two products.
+  constexpr int length_log2_at(std::int32_t x, std::uint64_t den_x) const {
     if (fixed_log2 >= 0) return fixed_log2;
-    int k = log2_for(den(x));
+    int k = log2_for(den_x);
     if (e_a > e_b && k > 0) {  // den falls along the row: den_min is at the segment's end
       const std::int32_t end = x + (std::int32_t{1} << k) < b ? x + (std::int32_t{1} << k) : b;
       const int at_end = log2_for(den(end));

@@ -175,7 +175,7 @@ struct GroupSpan {
     planner.start(c0, c1, row.e_a, row.e_b, texel_delta8(first, last, group, c), scale.texel_bits, c.tolerance_log2,
                   c.span_log2);
     take(first);
-    plan(src.divide, c0, c1);
+    plan(src.divide, c0, c1, planner.den(c0));
   }
 
   // At segment_end: take the exact point there and plan the next segment; in
@@ -191,7 +191,7 @@ struct GroupSpan {
       return;
     }
     take(end);
-    plan(src.divide, column, c1);
+    plan(src.divide, column, c1, static_cast<std::uint64_t>(end.denominator));  // end: RowInterpolation::at's point at column
   }
 
  private:
@@ -231,17 +231,17 @@ struct GroupSpan {
     segment_end = c0 + 1;
   }
 
-  // The segment from `column` (its values taken) to the next exact point: the
+  // The segment from `column` (its values taken, den_column the planner's den there) to the next exact point: the
   // planned power of two; where less than that is left, one segment back from the
   // span's end (plan_tail), else the largest power of two that fits before it.
   template <typename Divide>
-  constexpr void plan(const Divide& divide, std::int32_t column, std::int32_t c1) {
+  constexpr void plan(const Divide& divide, std::int32_t column, std::int32_t c1, std::uint64_t den_column) {
     if (column >= c1) {  // the span's last pixel
       segment_end = c1 + 1;
       return;
     }
     const std::int32_t left = c1 - column;
-    int k = planner.length_log2_at(column);
+    int k = planner.length_log2_at(column, den_column);
     if ((std::int32_t{1} << k) > left && plan_tail(divide, column, c1, fixedpoint::bit_length(static_cast<std::uint32_t>(left - 1))))
       return;
     while ((std::int32_t{1} << k) > left) --k;

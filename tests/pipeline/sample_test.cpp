@@ -1,5 +1,5 @@
 // 4_pixel/texture.hpp against texels worked out by hand on a 4x4 texture, and
-// its exact 8-bit SWAR bilinear against a scalar reference, bit for bit.
+// its exact 8-bit bilinear blends (lanes, dual products) against a scalar reference, bit for bit.
 //
 // The texture, as stored in the scene file (top row first), texel (column, row_from_top):
 //   r = 17 * column + 68 * row_from_top   (0..255, every texel distinct)
@@ -164,7 +164,8 @@ TEST_CASE("bilinear at the texture's edge follows the wrap mode: clamp, repeat, 
   CHECK(rgb(spanlight::bilinear_clamp(clamp.grid(), at(1000.0), at(1000.0))) == std::array<int, 3>{51, 204, 120});
 }
 
-TEST_CASE("the SWAR bilinear blend equals the scalar blend round(sum c w / 2^16) bit for bit, rounded and unrounded",
+TEST_CASE("both bilinear blends, lanes and dual products, equal the scalar blend round(sum c w / 2^16) bit for bit, "
+          "rounded and unrounded",
           "[sample]") {
   // Every weight pair (fx, fy) in [0, 255]^2 on texel sets chosen to reach the
   // lanes' limits (all 255, all 0, one corner 255) and at random. A lane carry
@@ -182,9 +183,13 @@ TEST_CASE("the SWAR bilinear blend equals the scalar blend round(sum c w / 2^16)
   for (const auto& t : sets) {
     for (std::uint32_t fy = 0; fy < 256; ++fy) {
       for (std::uint32_t fx = 0; fx < 256; ++fx) {
-        const spanlight::BilinearSums s = spanlight::bilinear_sums(t[0], t[1], t[2], t[3], fx, fy);
+        const spanlight::Taps taps{t[0], t[1], t[2], t[3], fx, fy};
+        const spanlight::BilinearSums s = spanlight::bilinear_sums(taps);
         const Colour rounded = spanlight::round_sums(s);
         const spanlight::Texel16 raw = spanlight::unrounded(s);
+        // The dual-product form (Cortex-M4/M7's, here through the lanes' portable forms), plus 0 and
+        // plus the rounding half; firmware.blend_check runs it on the targets' instructions.
+        const spanlight::Texel16 dots = spanlight::bilinear_dot_sums(taps, 0), dots_half = spanlight::bilinear_dot_sums(taps, 1u << 15);
         const std::uint32_t w[4] = {(256 - fx) * (256 - fy), fx * (256 - fy), (256 - fx) * fy, fx * fy};
         std::uint32_t sum[3] = {0, 0, 0};
         for (int k = 0; k < 4; ++k)
@@ -196,6 +201,8 @@ TEST_CASE("the SWAR bilinear blend equals the scalar blend round(sum c w / 2^16)
         for (int c = 0; c < 3; ++c) {
           same = same && got_raw[c] == sum[c] && got[static_cast<std::size_t>(c)] == static_cast<int>((sum[c] + 32768u) >> 16);
         }
+        same = same && dots.r == sum[0] && dots.g == sum[1] && dots.b == sum[2] && dots_half.r == sum[0] + 32768u &&
+               dots_half.g == sum[1] + 32768u && dots_half.b == sum[2] + 32768u;
         if (!same) {
           ++mismatches;
           UNSCOPED_INFO("texels " << std::hex << t[0] << " " << t[1] << " " << t[2] << " " << t[3] << std::dec << ", fx "

@@ -71,6 +71,37 @@ inline constexpr bool has_dsp = FIXEDPOINT_HAS_DSP != 0;
 #endif
 }
 
+// lane0(a) lane0(b) + lane1(a) lane1(b) + acc, each lane a signed 16-bit value (one smlad), modulo 2^32
+// as the instruction is (the callers' sums fit an int32).
+[[gnu::always_inline]] inline std::int32_t dot_signed_lanes_plus(std::uint32_t a, std::uint32_t b, std::int32_t acc) {
+#if FIXEDPOINT_HAS_DSP
+  return __smlad(static_cast<std::int32_t>(a), static_cast<std::int32_t>(b), acc);
+#else
+  auto lane = [](std::uint32_t x, int k) { return std::int64_t{static_cast<std::int16_t>(static_cast<std::uint16_t>(x >> (16 * k)))}; };
+  return static_cast<std::int32_t>(lane(a, 0) * lane(b, 0) + lane(a, 1) * lane(b, 1) + acc);
+#endif
+}
+
+// Lane 0 of a and lane 0 of b as a pair (a's in lane 0); the same for lane 1.
+[[gnu::always_inline]] inline std::uint32_t low_lanes(std::uint32_t a, std::uint32_t b) {
+#if FIXEDPOINT_HAS_DSP
+  std::uint32_t r;
+  asm("pkhbt %0, %1, %2, lsl #16" : "=r"(r) : "r"(a), "r"(b));  // GCC 12 builds it from a mask and an OR
+  return r;
+#else
+  return (a & 0xFFFFu) | (b << 16);
+#endif
+}
+[[gnu::always_inline]] inline std::uint32_t high_lanes(std::uint32_t a, std::uint32_t b) {
+#if FIXEDPOINT_HAS_DSP
+  std::uint32_t r;
+  asm("pkhtb %0, %1, %2, asr #16" : "=r"(r) : "r"(b), "r"(a));
+  return r;
+#else
+  return (a >> 16) | (b & 0xFFFF0000u);
+#endif
+}
+
 // The two lanes' products: lane0(a) * lane0(b) and lane1(a) * lane1(b), each below 2^16.
 [[gnu::always_inline]] inline std::uint32_t lane_products(std::uint32_t a, std::uint32_t b) {
 #if FIXEDPOINT_HAS_DSP

@@ -54,8 +54,8 @@ struct Light {
     const std::int32_t x_max = (level.width - 1) << 8;
     x = x < 0 ? 0 : (x > x_max ? x_max : x);
     const std::int32_t y = level.height * 128 - 128;
-    f = unrounded(footprint_sums({level.texels + (y >> 8) * level.stride + (x >> 8), static_cast<std::uint32_t>(x) & 255u,
-                                  static_cast<std::uint32_t>(y) & 255u}, level.stride));
+    f = bilinear_texel16(taps_at(level.texels + (y >> 8) * level.stride + (x >> 8), level.stride, static_cast<std::uint32_t>(x) & 255u,
+                                 static_cast<std::uint32_t>(y) & 255u));
   }
   auto q16 = [](std::uint32_t v) { return ((v >> 8) * 257u + 128u) >> 8; };
   return {q16(f.r), q16(f.g), q16(f.b)};

@@ -47,23 +47,23 @@ constexpr MipLevel mip_level(const TextureData& texture, const TexelGrid& g0, in
   return m;
 }
 
-// A repeating level's sums. The top shift - 8 bits hold the texel index and the
+// A repeating level's taps. The top shift - 8 bits hold the texel index and the
 // 8-bit weight: one shift below 32 (shift <= 32), and a side of one texel (shift
 // 32) reads texel 0 and its frame copy.
-[[gnu::always_inline]] inline BilinearSums repeat_level_sums(const MipLevel& m, std::uint32_t x, std::uint32_t y) {
+[[gnu::always_inline]] inline Taps repeat_level_taps(const MipLevel& m, std::uint32_t x, std::uint32_t y) {
   const TexelGrid& g = m.grid;
   const std::uint32_t xt = x >> m.x_down, yt = y >> m.y_down;
   const std::uint32_t x0 = xt >> 8, y0 = yt >> 8, fx = xt & 255u, fy = yt & 255u;
-  return footprint_sums({g.texels + static_cast<std::int32_t>(y0) * g.stride + static_cast<std::int32_t>(x0), fx, fy}, g.stride);
+  return taps_at(g.texels + static_cast<std::int32_t>(y0) * g.stride + static_cast<std::int32_t>(x0), g.stride, fx, fy);
 }
 
 template <Wrap W>
-[[gnu::always_inline]] inline BilinearSums level_sums(const MipLevel& m, std::uint32_t x, std::uint32_t y) {
+[[gnu::always_inline]] inline Taps level_taps(const MipLevel& m, std::uint32_t x, std::uint32_t y) {
   x -= m.back_x;
   y -= m.back_y;
-  if constexpr (W == Wrap::repeat) return repeat_level_sums(m, x, y);
-  else if constexpr (W == Wrap::clamp) return bilinear_clamp_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
-  else return bilinear_border_sums(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
+  if constexpr (W == Wrap::repeat) return repeat_level_taps(m, x, y);
+  else if constexpr (W == Wrap::clamp) return bilinear_clamp_taps(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
+  else return bilinear_border_taps(m.grid, static_cast<std::int32_t>(x), static_cast<std::int32_t>(y));
 }
 
 // One level of a run, read alone (lambda <= 0, or the last level).
@@ -71,7 +71,7 @@ template <Wrap W>
 struct OneLevelSampler {
   MipLevel m;
   [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y, std::int32_t) const {
-    return round_sums(level_sums<W>(m, x, y));
+    return bilinear_colour(level_taps<W>(m, x, y));
   }
 };
 
@@ -82,8 +82,8 @@ struct TwoLevelSampler {
   std::int32_t base, step;
 
   [[gnu::always_inline]] Colour operator()(std::uint32_t x, std::uint32_t y, std::int32_t i) const {
-    const Texel16 a = unrounded(level_sums<W>(lo, x, y));
-    const Texel16 b = unrounded(level_sums<W>(hi, x, y));
+    const Texel16 a = bilinear_texel16(level_taps<W>(lo, x, y));
+    const Texel16 b = bilinear_texel16(level_taps<W>(hi, x, y));
     const auto f = static_cast<std::uint32_t>((base + i * step) >> 8);  // in [0, 256): the run keeps one level band
     // (256 - f) a + f b = 256 a + f (b - a), one product: the sum is <= 255 * 2^24 < 2^32,
     // so the unsigned arithmetic mod 2^32 (b - a may wrap) gives it exactly.

@@ -38,6 +38,12 @@ constexpr TexelGrid texel_grid(const TextureLevel& level, int frac) {
 
 // ---- bilinear -----------------------------------------------------------------
 
+// A footprint: its four texels (t_xy, x to the right, y up a row) and the weights of the right and upper ones.
+struct Taps {
+  std::uint32_t t00, t10, t01, t11;
+  std::uint32_t fx, fy;  // 0..255
+};
+
 // The exact blend of four texels, all three channels. Red and blue share 16-bit
 // lanes (0x00RR00BB): a horizontal blend h = c0 (256 - fx) + c1 fx is below
 // 2^16 in each lane. The vertical blend of h needs 24 bits, so h is split into
@@ -45,8 +51,7 @@ constexpr TexelGrid texel_grid(const TextureLevel& level, int frac) {
 //   S = 256 A + B,  A = sum hi(h) w_y,  B = sum lo(h) w_y,
 //   round(S / 2^16) = (A + floor(B / 256) + 128) >> 8,
 // and A + B/256 <= S/256 <= 255 * 256, so the lanes never carry into each other.
-// Green blends in one word (below 2^24), its texels paired in lanes: a column's two (one
-// blend for both rows), or in the row form below a row's two (one dot product).
+// Green blends in one word (below 2^24), a column's two texels paired in lanes (one blend for both rows).
 struct BilinearSums {
   std::uint32_t a_rb, b_rb;  // A and B above, red and blue lanes
   std::uint32_t g;           // sum g_ij w_ij, < 2^24
@@ -59,65 +64,23 @@ struct BilinearSums {
   return (c0 << 8) + (c1 - c0) * f;
 }
 
-// Every blend on lanes of 32-bit words, on every target. Red and blue of a row share a word;
-// green travels as a vector over the two rows ((t >> 8) | (t' << 8)) & 0x00FF00FF (top in lane 0, bottom in lane 1; byte 3 of a texel is
-// zero), so one horizontal blend serves both rows, and the vertical blend is its two lanes'.
-[[gnu::always_inline]] constexpr BilinearSums bilinear_sums(std::uint32_t t00, std::uint32_t t10, std::uint32_t t01,
-                                                            std::uint32_t t11, std::uint32_t fx, std::uint32_t fy) {
+// Every blend on lanes of 32-bit words. Red and blue of a row share a word; green travels as a
+// vector over the two rows ((t >> 8) | (t' << 8)) & 0x00FF00FF (top in lane 0, bottom in lane 1;
+// byte 3 of a texel is zero), so one horizontal blend serves both rows, and the vertical blend is its two lanes'.
+[[gnu::always_inline]] constexpr BilinearSums bilinear_sums(const Taps& t) {
   constexpr std::uint32_t m = 0x00FF00FFu;
-  const std::uint32_t rb_top = lerp_lanes(t00 & m, t10 & m, fx), rb_bottom = lerp_lanes(t01 & m, t11 & m, fx);
-  const std::uint32_t g_rows = lerp_lanes(((t00 >> 8) | (t01 << 8)) & m, ((t10 >> 8) | (t11 << 8)) & m, fx);
-  return {lerp_lanes((rb_top >> 8) & m, (rb_bottom >> 8) & m, fy), lerp_lanes(rb_top & m, rb_bottom & m, fy),
-          lerp_lanes(g_rows & 0xFFFFu, g_rows >> 16, fy)};
+  const std::uint32_t rb_top = lerp_lanes(t.t00 & m, t.t10 & m, t.fx), rb_bottom = lerp_lanes(t.t01 & m, t.t11 & m, t.fx);
+  const std::uint32_t g_rows = lerp_lanes(((t.t00 >> 8) | (t.t01 << 8)) & m, ((t.t10 >> 8) | (t.t11 << 8)) & m, t.fx);
+  return {lerp_lanes((rb_top >> 8) & m, (rb_bottom >> 8) & m, t.fy), lerp_lanes(rb_top & m, rb_bottom & m, t.fy),
+          lerp_lanes(g_rows & 0xFFFFu, g_rows >> 16, t.fy)};
 }
-
-// Which form runs fewer instructions depends on what else the pixel loop keeps in registers
-// (measured on Cortex-M7 with tools/qemu_icount/measure_elf.sh): the lane form in an object's
-// sampler (textured_room -5.7 %, mesh_bear -2.4 %), the row form in a projector's image
-// (horizon -2.3 %, spot_shadow -1.4 %). Both give the same sums on every input.
-#if FIXEDPOINT_HAS_DSP
-// With lane instructions, a second form of the same sums, a row at a time:
-// h = c0 (256 - fx) + c1 fx, red and blue in their lanes, the row's two greens as a pair through one dual multiply-add (uxtb16, uxtab16, smuad).
-struct RowWeights {
-  std::uint32_t ifx, fx, pair;  // pair = ifx | fx << 16
-};
-[[gnu::always_inline]] inline RowWeights row_weights(std::uint32_t fx) { return {256u - fx, fx, (256u - fx) | (fx << 16)}; }
-
-struct RowBlend {
-  std::uint32_t rb, g;  // each lane < 2^16; g < 2^16
-};
-[[gnu::always_inline]] inline RowBlend row_blend(std::uint32_t t0, std::uint32_t t1, const RowWeights& w) {
-  using fixedpoint::bytes_0_2;
-  return {bytes_0_2(t0) * w.ifx + bytes_0_2(t1) * w.fx, fixedpoint::dot_lanes(fixedpoint::pair_byte_1(t0, t1), w.pair)};
-}
-
-// The vertical blend of the two rows.
-[[gnu::always_inline]] inline BilinearSums column_blend(const RowBlend& top, const RowBlend& bottom, std::uint32_t fy) {
-  using fixedpoint::bytes_0_2, fixedpoint::bytes_1_3;
-  const std::uint32_t ify = 256u - fy;
-  const std::uint32_t a = bytes_1_3(top.rb) * ify + bytes_1_3(bottom.rb) * fy;
-  const std::uint32_t b = bytes_0_2(top.rb) * ify + bytes_0_2(bottom.rb) * fy;
-  return {a, b, top.g * ify + bottom.g * fy};
-}
-
-[[gnu::always_inline]] inline BilinearSums bilinear_sums_by_rows(std::uint32_t t00, std::uint32_t t10, std::uint32_t t01,
-                                                                 std::uint32_t t11, std::uint32_t fx, std::uint32_t fy) {
-  const RowWeights w = row_weights(fx);
-  return column_blend(row_blend(t00, t10, w), row_blend(t01, t11, w), fy);
-}
-#else
-[[gnu::always_inline]] constexpr BilinearSums bilinear_sums_by_rows(std::uint32_t t00, std::uint32_t t10, std::uint32_t t01,
-                                                                    std::uint32_t t11, std::uint32_t fx, std::uint32_t fy) {
-  return bilinear_sums(t00, t10, t01, t11, fx, fy);
-}
-#endif
 
 [[gnu::always_inline]] inline Colour round_sums(const BilinearSums& s) {
   return {fixedpoint::bytes_1_3(fixedpoint::add_bytes_1_3(s.a_rb, s.b_rb) + 0x00800080u), (s.g + 0x8000u) >> 16};
 }
 
-// Each channel's sum before rounding (8-bit level * 2^16): a projector keeps these
-// bits through its colour multiply.
+// Each channel's sum S before rounding (8-bit level * 2^16): a projector keeps these
+// bits through its colour multiply, and trilinear through its mix.
 struct Texel16 {
   std::uint32_t r, g, b;
 };
@@ -125,14 +88,49 @@ struct Texel16 {
   return {((s.a_rb >> 16) << 8) + (s.b_rb >> 16), s.g, ((s.a_rb & 0xFFFFu) << 8) + (s.b_rb & 0xFFFFu)};
 }
 
-// Where the top-left texel of a bilinear footprint is, and the weights.
-struct Footprint {
-  const std::uint32_t* p;  // texel (x0, y0)
-  std::uint32_t fx, fy;
-};
+// The same sums from dual signed multiply-adds (smlad), each channel's vertical blend one
+// instruction. A row's lane h (< 2^16) less 2^15 is a signed halfword (h ^ 0x8000), the two
+// rows' pair is dotted with (256 - fy, fy), and the accumulator puts the bias back with `plus`:
+//   sum (h_i - 2^15) w_i + 2^23 + plus = S + plus  (w sums to 256); S + plus < 2^24 + 2^15 fits an int32.
+// The horizontal blends are c0 (256 - fx) + c1 fx in lanes, green paired by columns.
+[[gnu::always_inline]] inline Texel16 bilinear_dot_sums(const Taps& t, std::uint32_t plus) {
+  using fixedpoint::bytes_0_2, fixedpoint::pair_byte_1;
+  constexpr std::uint32_t bias = 0x80008000u;
+  const std::uint32_t ifx = 256u - t.fx;
+  auto row = [&](std::uint32_t c0, std::uint32_t c1) { return (c0 * ifx + c1 * t.fx) ^ bias; };
+  const std::uint32_t rb_top = row(bytes_0_2(t.t00), bytes_0_2(t.t10)), rb_bottom = row(bytes_0_2(t.t01), bytes_0_2(t.t11));
+  const std::uint32_t g_rows = row(pair_byte_1(t.t00, t.t01), pair_byte_1(t.t10, t.t11));  // top row in lane 0
+  const std::uint32_t wy = (256u - t.fy) | (t.fy << 16);
+  const auto acc = static_cast<std::int32_t>((1u << 23) + plus);
+  auto dot = [&](std::uint32_t rows) { return static_cast<std::uint32_t>(fixedpoint::dot_signed_lanes_plus(rows, wy, acc)); };
+  const std::uint32_t r = dot(fixedpoint::high_lanes(rb_top, rb_bottom)), b = dot(fixedpoint::low_lanes(rb_top, rb_bottom));
+  return {r, dot(g_rows), b};
+}
 
-[[gnu::always_inline]] inline BilinearSums footprint_sums(const Footprint& f, std::int32_t stride) {
-  return bilinear_sums(f.p[0], f.p[1], f.p[stride], f.p[stride + 1], f.fx, f.fy);
+// A footprint's colour rounded, and its sums unrounded, each in the form that costs fewer
+// instructions: the dual multiply-adds where the core has them, the lanes elsewhere (measured
+// on Cortex-M7 with tools/qemu_icount/measure_elf.sh: textured_room -7 %, its trilinear twin -11 %,
+// horizon -8 %). sample_test and firmware.blend_check check
+// that both forms give the scalar sums on every weight.
+[[gnu::always_inline]] inline Colour bilinear_colour(const Taps& t) {
+#if FIXEDPOINT_HAS_DSP
+  const Texel16 s = bilinear_dot_sums(t, 1u << 15);  // round(S / 2^16) = (S + 2^15) >> 16
+  return {fixedpoint::high_lanes(s.b, s.r), s.g >> 16};  // (r & 0xFFFF0000) | b >> 16: each below 256
+#else
+  return round_sums(bilinear_sums(t));
+#endif
+}
+[[gnu::always_inline]] inline Texel16 bilinear_texel16(const Taps& t) {
+#if FIXEDPOINT_HAS_DSP
+  return bilinear_dot_sums(t, 0);
+#else
+  return unrounded(bilinear_sums(t));
+#endif
+}
+
+// The taps at texel p (row stride in words) with weights fx, fy.
+[[gnu::always_inline]] inline Taps taps_at(const std::uint32_t* p, std::int32_t stride, std::uint32_t fx, std::uint32_t fy) {
+  return {p[0], p[1], p[stride], p[stride + 1], fx, fy};
 }
 
 // Repeating: x0 is the top bits, the weight the next 8 (x_shift >= 20 for sizes up to 4096).
@@ -140,7 +138,7 @@ struct Footprint {
                                                      int y_shift, std::uint32_t x, std::uint32_t y) {
   const std::uint32_t x0 = x >> x_shift, y0 = y >> y_shift;
   const std::uint32_t fx = (x >> (x_shift - 8)) & 255u, fy = (y >> (y_shift - 8)) & 255u;
-  return round_sums(footprint_sums({texels + static_cast<std::int32_t>(y0) * stride + static_cast<std::int32_t>(x0), fx, fy}, stride));
+  return bilinear_colour(taps_at(texels + static_cast<std::int32_t>(y0) * stride + static_cast<std::int32_t>(x0), stride, fx, fy));
 }
 [[gnu::always_inline]] inline Colour bilinear_repeat(const TexelGrid& g, std::uint32_t x, std::uint32_t y) {
   return bilinear_repeat_at(g.texels, g.stride, g.x_shift, g.y_shift, x, y);
@@ -165,33 +163,31 @@ struct NearestRepeatOfSize {
 
 // Clamp to edge: beyond the centres of the outer texels the edge texel alone
 // (x0 in [0, width - 1]; the frame holds column `width` for the zero weight).
-[[gnu::always_inline]] inline BilinearSums bilinear_clamp_sums(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+[[gnu::always_inline]] inline Taps bilinear_clamp_taps(const TexelGrid& g, std::int32_t x, std::int32_t y) {
   const std::int32_t x_max = (g.width - 1) << g.frac, y_max = (g.height - 1) << g.frac;
   x = x < 0 ? 0 : (x > x_max ? x_max : x);
   y = y < 0 ? 0 : (y > y_max ? y_max : y);
   const int weight_shift = g.frac - 8;
-  return footprint_sums({g.texels + (y >> g.frac) * g.stride + (x >> g.frac),
-                         (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
-                         (static_cast<std::uint32_t>(y) >> weight_shift) & 255u}, g.stride);
+  return taps_at(g.texels + (y >> g.frac) * g.stride + (x >> g.frac), g.stride, (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
+                 (static_cast<std::uint32_t>(y) >> weight_shift) & 255u);
 }
 [[gnu::always_inline]] inline Colour bilinear_clamp(const TexelGrid& g, std::int32_t x, std::int32_t y) {
-  return round_sums(bilinear_clamp_sums(g, x, y));
+  return bilinear_colour(bilinear_clamp_taps(g, x, y));
 }
 
 // Border on an object's texture, where the coordinate may lie anywhere: texels
 // outside the image are black. Out of line: rare, and bulky inlined.
-[[gnu::noinline]] inline BilinearSums bilinear_border_sums(const TexelGrid& g, std::int32_t x, std::int32_t y) {
+[[gnu::noinline]] inline Taps bilinear_border_taps(const TexelGrid& g, std::int32_t x, std::int32_t y) {
   const std::int32_t x0 = x >> g.frac, y0 = y >> g.frac;
   auto at = [&](std::int32_t xi, std::int32_t yi) -> std::uint32_t {
     return xi < 0 || yi < 0 || xi >= g.width || yi >= g.height ? 0u : g.texels[yi * g.stride + xi];
   };
   const int weight_shift = g.frac - 8;
-  return bilinear_sums(at(x0, y0), at(x0 + 1, y0), at(x0, y0 + 1), at(x0 + 1, y0 + 1),
-                       (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
-                       (static_cast<std::uint32_t>(y) >> weight_shift) & 255u);
+  return {at(x0, y0), at(x0 + 1, y0), at(x0, y0 + 1), at(x0 + 1, y0 + 1), (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
+          (static_cast<std::uint32_t>(y) >> weight_shift) & 255u};
 }
 [[gnu::always_inline]] inline Colour bilinear_border(const TexelGrid& g, std::int32_t x, std::int32_t y) {
-  return round_sums(bilinear_border_sums(g, x, y));
+  return bilinear_colour(bilinear_border_taps(g, x, y));
 }
 
 // ---- nearest ------------------------------------------------------------------
@@ -221,9 +217,8 @@ template <Wrap W>
   const TextureLevel& level = image.levels[0];
   if (bilinear_ok && image.filter != Filter::nearest) {
     const std::int32_t x = x8 - 128, y = y8 - 128;
-    const std::uint32_t* p = level.texels + (y >> 8) * level.stride + (x >> 8);
-    return unrounded(bilinear_sums_by_rows(p[0], p[1], p[level.stride], p[level.stride + 1], static_cast<std::uint32_t>(x) & 255u,
-                                           static_cast<std::uint32_t>(y) & 255u));
+    return bilinear_texel16(taps_at(level.texels + (y >> 8) * level.stride + (x >> 8), level.stride, static_cast<std::uint32_t>(x) & 255u,
+                                    static_cast<std::uint32_t>(y) & 255u));
   }
   const Colour c = nearest<Wrap::border>(texel_grid(level, 8), x8, y8);
   return {red(c) << 16, green(c) << 16, blue(c) << 16};

@@ -17,8 +17,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <random>
 
 #include "pipeline_support.hpp"
+#include "spanlight/4_pixel/shadow.hpp"
 
 namespace pt = spanlight::ptest;
 namespace sc = spanlight::scene;
@@ -151,4 +153,35 @@ TEST_CASE("pcf2x2 gives intermediate light only near the shadow's outline", "[sh
   CHECK(mixed_far == 0);
   CHECK(clear.wrong_dark == 0);
   CHECK(clear.wrong_lit == 0);
+}
+
+TEST_CASE("the shadow compare in 32 bits (a stored depth against shadow_need) is r - bias <= depth in Q1.30", "[shadow]") {
+  // r - bias over its whole range (|r| < 2^33 in Q1.30, |bias| < 2^31) against stored depths of
+  // 16 and 24 bits, at random and at the boundaries d 2^k - 1, d 2^k, d 2^k + 1 where a wrong
+  // ceiling would show.
+  std::mt19937_64 random(0x5ad0);
+  long long wrong = 0, compared = 0;
+  for (const int depth_bits : {16, 24}) {
+    const int k = 30 - depth_bits;
+    const std::uint32_t top = (1u << depth_bits) - 1u;
+    auto check = [&](std::int64_t r_biased, std::uint32_t stored) {
+      const bool exact = r_biased <= (std::int64_t{stored} << k);
+      wrong += exact != (stored >= spanlight::shadow_need(r_biased, depth_bits));
+      ++compared;
+    };
+    for (int n = 0; n < 200000; ++n) {
+      const auto stored = static_cast<std::uint32_t>(random() & top);
+      const std::int64_t near = (std::int64_t{stored} << k) + static_cast<std::int64_t>(random() % 3) - 1;
+      check(near, stored);
+      const std::int64_t any = static_cast<std::int64_t>(random() % ((std::uint64_t{1} << 35) + (std::uint64_t{1} << 32))) -
+                               (std::int64_t{1} << 33) - (std::int64_t{1} << 31);
+      check(any, stored);
+    }
+    for (const std::uint32_t stored : {0u, 1u, top - 1u, top})
+      for (const std::int64_t r : {std::int64_t{-(1ll << 33) - (1ll << 31) + 1}, std::int64_t{-1}, std::int64_t{0}, std::int64_t{1},
+                                   (std::int64_t{top} << k) + 1, std::int64_t{(1ll << 33) + (1ll << 31) - 1}})
+        check(r, stored);
+  }
+  INFO(compared << " compares");
+  CHECK(wrong == 0);
 }

@@ -13,14 +13,21 @@ namespace spanlight {
 
 inline constexpr int shadow_proj_frac_bits = 28;  // s/q, t/q, r/q arrive in Q3.28
 
+// A texel lets the light through when r/q - bias <= its depth: with the map's depth d (its top
+// depth_bits of Q1.30) that is r_biased <= d 2^k, k = 30 - depth_bits, and for an integer d
+// the same as ceil(r_biased / 2^k) <= d: one 32-bit compare a tap against `need`.
+[[gnu::always_inline]] constexpr std::uint32_t shadow_need(std::int64_t r_biased, int depth_bits) {
+  // |r_biased| < 2^33 + 2^31 (Q3.28 r shifted to Q1.30, less the bias), k >= 6: the quotient fits 2^28.
+  const std::int32_t need = -fixedpoint::floor_shifted_right(-r_biased, 30 - depth_bits);  // ceil: floor of the negation
+  return need < 0 ? 0u : static_cast<std::uint32_t>(need);  // every depth >= 0 lets a negative one through
+}
+
 template <typename DepthT>
 [[gnu::always_inline]] inline bool shadow_lit_at(const DepthT* map, std::int32_t size, std::int32_t x, std::int32_t y_from_bottom,
-                          std::int64_t r_minus_bias_q30, int depth_bits) {
+                                                 std::uint32_t need) {
   x = x < 0 ? 0 : (x >= size ? size - 1 : x);
   y_from_bottom = y_from_bottom < 0 ? 0 : (y_from_bottom >= size ? size - 1 : y_from_bottom);
-  const std::uint32_t stored = map[(size - 1 - y_from_bottom) * size + x];
-  const std::int64_t d_q30 = std::int64_t{stored} << (30 - depth_bits);
-  return r_minus_bias_q30 <= d_q30;
+  return map[(size - 1 - y_from_bottom) * size + x] >= need;
 }
 
 // Fraction of light let through, in 1/256 (0..256).
@@ -28,7 +35,7 @@ template <bool Pcf, typename DepthT>
 [[gnu::always_inline]] inline std::uint32_t shadow_factor(const ProjectorData& p, const DepthT* map, std::int32_t s, std::int32_t t,
                                    std::int32_t r, int depth_bits) {
   const std::int32_t size = p.map_size;
-  const std::int64_t r_biased = (std::int64_t{r} << (30 - shadow_proj_frac_bits)) - p.bias;
+  const std::uint32_t need = shadow_need((std::int64_t{r} << (30 - shadow_proj_frac_bits)) - p.bias, depth_bits);
   if constexpr (Pcf) {
     if (p.filter == ShadowFilter::pcf2x2) {
       // Map coordinates with 8 fraction bits, shifted to texel centres.
@@ -36,16 +43,16 @@ template <bool Pcf, typename DepthT>
       const std::int32_t ys = static_cast<std::int32_t>(fixedpoint::mul_s32(t, size) >> (shadow_proj_frac_bits - 8)) - 128;
       const std::int32_t x0 = xs >> 8, y0 = ys >> 8;
       const std::uint32_t fx = static_cast<std::uint32_t>(xs) & 255u, fy = static_cast<std::uint32_t>(ys) & 255u;
-      const std::uint32_t lit = (256 - fx) * (256 - fy) * shadow_lit_at(map, size, x0, y0, r_biased, depth_bits) +
-                                fx * (256 - fy) * shadow_lit_at(map, size, x0 + 1, y0, r_biased, depth_bits) +
-                                (256 - fx) * fy * shadow_lit_at(map, size, x0, y0 + 1, r_biased, depth_bits) +
-                                fx * fy * shadow_lit_at(map, size, x0 + 1, y0 + 1, r_biased, depth_bits);
+      const std::uint32_t lit = (256 - fx) * (256 - fy) * shadow_lit_at(map, size, x0, y0, need) +
+                                fx * (256 - fy) * shadow_lit_at(map, size, x0 + 1, y0, need) +
+                                (256 - fx) * fy * shadow_lit_at(map, size, x0, y0 + 1, need) +
+                                fx * fy * shadow_lit_at(map, size, x0 + 1, y0 + 1, need);
       return (lit + 128u) >> 8;
     }
   }
   const std::int32_t x = static_cast<std::int32_t>(fixedpoint::mul_s32(s, size) >> shadow_proj_frac_bits);
   const std::int32_t y = static_cast<std::int32_t>(fixedpoint::mul_s32(t, size) >> shadow_proj_frac_bits);
-  return shadow_lit_at(map, size, x, y, r_biased, depth_bits) ? 256u : 0u;
+  return shadow_lit_at(map, size, x, y, need) ? 256u : 0u;
 }
 
 }  // namespace spanlight

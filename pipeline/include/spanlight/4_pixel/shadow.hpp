@@ -22,12 +22,13 @@ inline constexpr int shadow_proj_frac_bits = 28;  // s/q, t/q, r/q arrive in Q3.
   return need < 0 ? 0u : static_cast<std::uint32_t>(need);  // every depth >= 0 lets a negative one through
 }
 
+// Map indices clamp to [0, size - 1]; rows are stored from the top, y counts from the bottom.
+[[gnu::always_inline]] constexpr std::int32_t clamp_index(std::int32_t i, std::int32_t size) {
+  return i < 0 ? 0 : (i >= size ? size - 1 : i);
+}
 template <typename DepthT>
-[[gnu::always_inline]] inline bool shadow_lit_at(const DepthT* map, std::int32_t size, std::int32_t x, std::int32_t y_from_bottom,
-                                                 std::uint32_t need) {
-  x = x < 0 ? 0 : (x >= size ? size - 1 : x);
-  y_from_bottom = y_from_bottom < 0 ? 0 : (y_from_bottom >= size ? size - 1 : y_from_bottom);
-  return map[(size - 1 - y_from_bottom) * size + x] >= need;
+[[gnu::always_inline]] inline const DepthT* shadow_row(const DepthT* map, std::int32_t size, std::int32_t y_from_bottom) {
+  return map + (size - 1 - clamp_index(y_from_bottom, size)) * size;
 }
 
 // Fraction of light let through, in 1/256 (0..256).
@@ -43,16 +44,16 @@ template <bool Pcf, typename DepthT>
       const std::int32_t ys = static_cast<std::int32_t>(fixedpoint::mul_s32(t, size) >> (shadow_proj_frac_bits - 8)) - 128;
       const std::int32_t x0 = xs >> 8, y0 = ys >> 8;
       const std::uint32_t fx = static_cast<std::uint32_t>(xs) & 255u, fy = static_cast<std::uint32_t>(ys) & 255u;
-      const std::uint32_t lit = (256 - fx) * (256 - fy) * shadow_lit_at(map, size, x0, y0, need) +
-                                fx * (256 - fy) * shadow_lit_at(map, size, x0 + 1, y0, need) +
-                                (256 - fx) * fy * shadow_lit_at(map, size, x0, y0 + 1, need) +
-                                fx * fy * shadow_lit_at(map, size, x0 + 1, y0 + 1, need);
+      const DepthT *row0 = shadow_row(map, size, y0), *row1 = shadow_row(map, size, y0 + 1);
+      const std::int32_t xa = clamp_index(x0, size), xb = clamp_index(x0 + 1, size);  // each clamped once for both rows
+      const std::uint32_t lit = (256 - fx) * (256 - fy) * (row0[xa] >= need) + fx * (256 - fy) * (row0[xb] >= need) +
+                                (256 - fx) * fy * (row1[xa] >= need) + fx * fy * (row1[xb] >= need);
       return (lit + 128u) >> 8;
     }
   }
   const std::int32_t x = static_cast<std::int32_t>(fixedpoint::mul_s32(s, size) >> shadow_proj_frac_bits);
   const std::int32_t y = static_cast<std::int32_t>(fixedpoint::mul_s32(t, size) >> shadow_proj_frac_bits);
-  return shadow_lit_at(map, size, x, y, need) ? 256u : 0u;
+  return shadow_row(map, size, y)[clamp_index(x, size)] >= need ? 256u : 0u;
 }
 
 }  // namespace spanlight

@@ -67,8 +67,11 @@ constexpr std::size_t projector_slots(int n) { return n > 0 ? static_cast<std::s
 // Calls fn(j) for each projector j in [begin, end). Unrolled over the
 // compile-time maximum N, so j is a constant in each copy and a walk's
 // per-projector values stay in registers instead of an array indexed at run time.
+// The pragma makes the unrolling certain: GCC's own choice kept a two-projector
+// kernel's loop (v2_facing_wall on Cortex-M7: 25.6 -> 23.0 M with it).
 template <int N, typename Fn>
 [[gnu::always_inline]] inline void for_each_projector(int begin, int end, Fn&& fn) {
+#pragma GCC unroll 16
   for (int j = 0; j < N; ++j) {
     if (j >= begin && j < end) fn(j);
   }

@@ -97,4 +97,11 @@ template <Features F, typename DepthT>
   return colour_of(channel(scale[0], texel.r), channel(scale[1], texel.g), channel(scale[2], texel.b));
 }
 
+// The same out of line: where three or more projectors reach a pixel loop, each copy inlined
+// costs the loop more in spilled registers than the call (three_projectors on Cortex-M7).
+template <Features F, typename DepthT>
+[[gnu::noinline]] Colour projector_light_outlined(const Light<DepthT>& light, std::int32_t s, std::int32_t t, std::int32_t r, int depth_bits) {
+  return projector_light<F>(light, s, t, r, depth_bits);
+}
+
 }  // namespace spanlight

@@ -21,8 +21,9 @@ std::int64_t walk_triangle(const spanlight::TriangleSetup& setup, const spanligh
                            std::vector<std::uint32_t>& sink) {
   std::int64_t pixels = 0;
   spanlight::TriangleSetup t = setup;  // rasterize_rows steps the edges
+  spanlight::PixelRun<1> pixel_run{};  // zeroed once a triangle, as draw.hpp does
   spanlight::rasterize_rows(t, benchmarks::width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
-    spanlight::walk_span<1, UV, Projectors>(t, attributes, needs, control, divide, c0, c1,
+    spanlight::walk_span<1, UV, Projectors>(t, attributes, needs, control, divide, c0, c1, pixel_run,
                                             [&](std::int32_t column, std::int32_t count, const spanlight::PixelRun<1>& run) {
       std::uint32_t z = run.z;
       spanlight::Stepped u = run.u, s = run.s[0];

@@ -112,6 +112,7 @@ void check_triangle(const sl::ScreenVertex (&v)[3], const sl::ClipVertex<P>* con
     // walk_span on at most 4 rows spread over the triangle (it is the slow part).
     const std::int32_t rows = t.row_end - t.row_begin, stride = rows > 4 ? rows / 4 : 1;
     std::int32_t last_row = -1;
+    sl::PixelRun<P> pixel_run{};  // zeroed once a triangle, as draw.hpp does
     sl::rasterize_rows(t, width, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
       if (row <= last_row || row < 0 || row >= height) fail("row out of order or outside the viewport");
       if (c0 > c1 || c0 < 0 || c1 >= width) fail("span outside the viewport");
@@ -119,7 +120,7 @@ void check_triangle(const sl::ScreenVertex (&v)[3], const sl::ClipVertex<P>* con
       const bool walk = (row - t.row_begin) % stride == 0 || row + 1 == t.row_end;
       if (walk) {
         std::int32_t expect = c0;
-        sl::walk_span<P, true, true>(t, a, needs, control, divide, c0, c1,
+        sl::walk_span<P, true, true>(t, a, needs, control, divide, c0, c1, pixel_run,
                                      [&](std::int32_t column, std::int32_t count, const sl::PixelRun<P>& run) {
           if (column != expect || count < 1) fail("walk_span skipped or repeated a column");
           expect += count;

@@ -137,10 +137,11 @@ void walk_case(SetUpCase& sc, int span_log2, MipRule mip, int row_stride, OnRun&
   const SpanControl control{span_log2, 5, &scale, sc.c.frac, texels, texel_bits, 0xFFFFFFFFu, &sc.planes, mip};
   const FixedDivide<8, 1> divide{};
   TriangleSetup rows = sc.t;
+  PixelRun<0> run{};  // zeroed once a triangle, as draw.hpp does
   rasterize_rows(rows, 320, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
     if (row % row_stride != 0) return;
     set_lod_row(sc.planes, row);
-    walk_span<0, true, false, true>(rows, attrs, needs, control, divide, c0, c1,
+    walk_span<0, true, false, true>(rows, attrs, needs, control, divide, c0, c1, run,
                                      [&](std::int32_t column, std::int32_t count, const PixelRun<0>& r) { on_run(row, column, count, r); });
   });
 }

@@ -291,15 +291,16 @@ struct GroupSpan {
 // PixelRun) for runs between events. UV and Projectors are fixed at compile
 // time so that each pass steps only what it reads: a depth pass steps depth alone;
 // Lod compiles the mip level's computation (a build with trilinear textures).
+// `run` comes zeroed from the caller, once a triangle: the groups a shape does not
+// step keep zero values and steps, and what it steps is set before every run.
 template <int P, bool UV, bool Projectors, bool Lod = false, typename Divide, typename RunFn>
 inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
                       const SpanControl& control, const Divide& divide, std::int32_t c0, std::int32_t c1,
-                      RunFn&& run_pixels) {
+                      PixelRun<P>& run, RunFn&& run_pixels) {
   constexpr int PS = P > 0 && Projectors ? P : 1;
   const GroupSource<P, Divide> src{t, a, divide};
   const ScreenWeights s0 = screen_weights(t, t.edge[1].value_at(c0), t.edge[2].value_at(c0));
 
-  PixelRun<P> run{};  // groups the walk does not step keep zero values and steps
   // Depth: exact at c0, then dz/dx. If the stepped depth could leave [0, z_limit]
   // (rounding at the near or far plane), or the triangle is too steep for dz/dx,
   // every pixel takes its exact depth, clamped.

@@ -214,15 +214,16 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       }
       hooks.triangle_rows();
       with_walk_shape<Kernel::may_need_uv, (Kernel::may_need_projectors && P > 0)>(needs, [&](auto uv, auto projectors) {
+        PixelRun<P> run{};  // the walk's, zeroed once a triangle
         rasterize_rows(setup, view.width, view.row_begin, view.row_end, [&](std::int32_t row, std::int32_t c0, std::int32_t c1) {
           const auto row_start = static_cast<std::uint32_t>((row - view.row_begin) * view.width);
           if constexpr (F.trilinear) {
             if (control.lod != nullptr) set_lod_row(lod, row);
           }
           walk_span<P, decltype(uv)::value, decltype(projectors)::value, F.trilinear>(
-              setup, attrs, needs, control, divide, c0, c1,
-              [&](std::int32_t column, std::int32_t count, const PixelRun<P>& run) SPANLIGHT_LAMBDA_INLINE_ATTR {
-                kernel.run(row_start + static_cast<std::uint32_t>(column), count, run);
+              setup, attrs, needs, control, divide, c0, c1, run,
+              [&](std::int32_t column, std::int32_t count, const PixelRun<P>& pixels) SPANLIGHT_LAMBDA_INLINE_ATTR {
+                kernel.run(row_start + static_cast<std::uint32_t>(column), count, pixels);
               });
         });
       });

@@ -1,5 +1,5 @@
 // multiply_check: every 32 x 32 -> 64 product of fixedpoint/bits.hpp (mul_u32, mul_s32,
-// mul_s32_u32, mul_s32_setup, mul_u32_u16, mul_s64_u16, mul_s64_u32) against the compiler's
+// mul_s32_u32, mul_s32_nonnegative, mul_s32_setup, mul_u32_u16, mul_s64_u16, mul_s64_u32) against the compiler's
 // int64 multiply (libgcc's __aeabi_lmul on Cortex-M0+, an independent implementation), over
 // the operands' edge values paired with each other and 2^20 pseudo-random pairs. On Cortex-M0+
 // the first four are Thumb-1 assembly that the host never runs: frames equal to the host's
@@ -27,6 +27,8 @@ void check(std::uint32_t a, std::uint32_t b) {
   wrong += mul_u32(a, b) != unsigned_product;
   wrong += mul_s32(sa, sb) != signed_product;
   wrong += mul_s32_u32(sa, b) != mixed_product;
+  const std::int32_t nonnegative = static_cast<std::int32_t>(b & 0x7FFFFFFFu);
+  wrong += mul_s32_nonnegative(sa, nonnegative) != std::int64_t{sa} * nonnegative;
   wrong += mul_s32_setup(sa, sb) != signed_product;
   wrong += mul_u32_u16(a, b & 0xFFFFu) != std::uint64_t{a} * (b & 0xFFFFu);
   // A 64-bit factor whose product with b fits int64: the signed product shifted into the high word.

@@ -112,6 +112,15 @@ inline constexpr bool has_long_multiply = true;
     return signed_from_unsigned(mul_u32(static_cast<std::uint32_t>(a), b), a < 0 ? b : 0u);
   }
 }
+// a b for b >= 0: the signed multiply where there is one (smull; mul_s32_u32's form costs a
+// correction there), else mul_s32_u32, one sign correction fewer than mul_s32.
+[[gnu::always_inline]] constexpr std::int64_t mul_s32_nonnegative(std::int32_t a, std::int32_t b) {
+  if constexpr (has_long_multiply) {
+    return std::int64_t{a} * b;
+  } else {
+    return mul_s32_u32(a, static_cast<std::uint32_t>(b));
+  }
+}
 
 // The same product for code that runs per triangle or per vertex, not per
 // pixel: on ARMv6-M one out-of-line copy of the four-product routine (a call

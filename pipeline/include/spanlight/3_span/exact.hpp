@@ -158,7 +158,7 @@ struct RowInterpolation {
     // 1/den_top is then 2^62 / den_top and gamma the product's high word.
     const fixedpoint::NormalisedPair top = fixedpoint::normalised_pair(den, num);
     const auto gamma = static_cast<std::int32_t>(fixedpoint::mul_u32(top.y_top, divide.of_normalised(top.x_top)) >> 32);  // Q0.30
-    for (int k = 0; k < Components; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32(df[k], gamma) >> 30);
+    for (int k = 0; k < Components; ++k) out.value[k] = f_a[k] + static_cast<std::int32_t>(fixedpoint::mul_s32_nonnegative(df[k], gamma) >> 30);
   }
 };
 

@@ -87,7 +87,7 @@ struct TwoLevelSampler {
     const auto f = static_cast<std::uint32_t>((base + i * step) >> 8);  // in [0, 256): the run keeps one level band
     // (256 - f) a + f b = 256 a + f (b - a), one product: the sum is <= 255 * 2^24 < 2^32,
     // so the unsigned arithmetic mod 2^32 (b - a may wrap) gives it exactly.
-    auto mix = [&](std::uint32_t p, std::uint32_t q) { return ((p << 8) + f * (q - p) + (1u << 23)) >> 24; };
+    auto mix = [&](std::uint32_t p, std::uint32_t q) SPANLIGHT_LAMBDA_INLINE_ATTR { return ((p << 8) + f * (q - p) + (1u << 23)) >> 24; };
     return colour_of(mix(a.r, b.r), mix(a.g, b.g), mix(a.b, b.b));
   }
 };

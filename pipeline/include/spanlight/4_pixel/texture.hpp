@@ -16,6 +16,7 @@
 #include "fixedpoint/bits.hpp"
 #include "fixedpoint/lanes.hpp"
 #include "spanlight/4_pixel/colour.hpp"
+#include "spanlight/inline.hpp"
 #include "spanlight/scene.hpp"
 
 namespace spanlight {
@@ -97,12 +98,12 @@ struct Texel16 {
   using fixedpoint::bytes_0_2, fixedpoint::pair_byte_1;
   constexpr std::uint32_t bias = 0x80008000u;
   const std::uint32_t ifx = 256u - t.fx;
-  auto row = [&](std::uint32_t c0, std::uint32_t c1) { return (c0 * ifx + c1 * t.fx) ^ bias; };
+  auto row = [&](std::uint32_t c0, std::uint32_t c1) SPANLIGHT_LAMBDA_INLINE_ATTR { return (c0 * ifx + c1 * t.fx) ^ bias; };
   const std::uint32_t rb_top = row(bytes_0_2(t.t00), bytes_0_2(t.t10)), rb_bottom = row(bytes_0_2(t.t01), bytes_0_2(t.t11));
   const std::uint32_t g_rows = row(pair_byte_1(t.t00, t.t01), pair_byte_1(t.t10, t.t11));  // top row in lane 0
   const std::uint32_t wy = (256u - t.fy) | (t.fy << 16);
   const auto acc = static_cast<std::int32_t>((1u << 23) + plus);
-  auto dot = [&](std::uint32_t rows) { return static_cast<std::uint32_t>(fixedpoint::dot_signed_lanes_plus(rows, wy, acc)); };
+  auto dot = [&](std::uint32_t rows) SPANLIGHT_LAMBDA_INLINE_ATTR { return static_cast<std::uint32_t>(fixedpoint::dot_signed_lanes_plus(rows, wy, acc)); };
   const std::uint32_t r = dot(fixedpoint::high_lanes(rb_top, rb_bottom)), b = dot(fixedpoint::low_lanes(rb_top, rb_bottom));
   return {r, dot(g_rows), b};
 }

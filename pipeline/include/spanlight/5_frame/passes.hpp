@@ -334,8 +334,7 @@ struct FusedKernel {
         Colour light = ambient;
         for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
           if (on[j] && p[j].inside()) {
-            const Colour add = P >= 3 ? projector_light_outlined<F>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift)
-                                      : projector_light<F>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift);
+            const Colour add = projector_light<F>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift);
             if (add != black) light = Color::quantize(add_light(light, add));
           }
         });

@@ -165,9 +165,14 @@ struct GroupSpan {
       take_per_pixel(first, c0);
       return;
     }
+    // q > 0 all along: s/q, t/q and r/q are monotonic along the row (ratios of linear
+    // functions without a pole), so a projector outside one side at both ends is outside all along.
+    if (group != uv_group && outside_all_along(first, last)) {
+      take_constant(first, c1);
+      return;
+    }
     if (!interpolable(first, last)) {
-      if (group != uv_group && outside_all_along(first, last)) take_constant(first, c1);
-      else take_per_pixel(first, c0);
+      take_per_pixel(first, c0);
       return;
     }
     mode = GroupMode::interpolated;

@@ -11,9 +11,9 @@
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 
 #include "spanlight/3_span/divide.hpp"
+#include "spanlight/5_frame/clear.hpp"
 #include "spanlight/5_frame/draw.hpp"
 #include "spanlight/5_frame/passes.hpp"
 #include "spanlight/features.hpp"
@@ -121,7 +121,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
     const std::uint16_t rows = scene.height - y0 < band_rows ? static_cast<std::uint16_t>(scene.height - y0) : band_rows;
     const std::uint32_t pixels = std::uint32_t{scene.width} * rows;
     clear_depth(target.depth.data(), pixels, depth.clear);
-    std::memset(target.color.data(), 0, std::size_t{pixels} * Color::per_pixel * sizeof(target.color[0]));  // black: all bytes 0 in every format
+    fill_bytes(target.color.data(), std::size_t{pixels} * Color::per_pixel * sizeof(target.color[0]), 0);  // black: all bytes 0 in every format
     const PassView eye{scene.width, scene.height, -1, y0, y0 + rows};
     const BandBuffers<F.format, DepthT> band{target.color.data(), target.depth.data(), target.tie_mask.data()};
     using H = std::remove_reference_t<Hooks>;
@@ -134,7 +134,7 @@ RenderStatus render_frame(const PreparedScene& scene, const FrameMatrices& matri
         hooks.pass_end(Pass::fused, -1);
       }
     } else if constexpr (F.multipass) {
-      auto clear_mask = [&] { std::memset(target.tie_mask.data(), 0, tie_mask_bytes(pixels)); };
+      auto clear_mask = [&] { fill_bytes(target.tie_mask.data(), tie_mask_bytes(pixels), 0); };
       DepthAmbientKernel<F, DepthT, H> depth_pass{band, ambient, depth, hooks};
       hooks.pass_begin(Pass::depth_ambient, -1);
       draw_pass<F>(scene, matrices, eye, knobs, divide, depth.z_limit, target.vertices.data(), depth_pass, hooks);

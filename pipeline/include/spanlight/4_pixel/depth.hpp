@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 
 namespace spanlight {
 
@@ -32,17 +31,6 @@ struct DepthFormat {
     return store(z_q32 > z_limit ? z_limit : z_q32);
   }
 };
-
-// Fills n stored depths with the clear value. When the clear value fills the type (16 bits in
-// 16-bit storage, 32 in 32-bit) every byte is 0xFF and the C library's word-wide memset does it.
-template <typename DepthT>
-inline void clear_depth(DepthT* depth, std::size_t n, std::uint32_t clear) {
-  if (clear == static_cast<DepthT>(~DepthT{0})) {
-    std::memset(depth, 0xFF, n * sizeof(DepthT));
-    return;
-  }
-  for (std::size_t i = 0; i < n; ++i) depth[i] = static_cast<DepthT>(clear);
-}
 
 // One bit per pixel: a z-equal pass claims a pixel once, so two surfaces that
 // store the same depth there are not lit or modulated twice. The first one

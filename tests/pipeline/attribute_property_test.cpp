@@ -109,7 +109,7 @@ struct Reference {
   double w[3] = {};                    // clip w per vertex
   double u[3] = {}, v[3] = {};         // texels
   int uv_frac_bits = 0;
-  double s[projectors][3] = {}, t[projectors][3] = {}, q[projectors][3] = {};
+  double s[projectors][3] = {}, t[projectors][3] = {}, r[projectors][3] = {}, q[projectors][3] = {};
   double unit[projectors] = {};        // one unit after set_projector() (2_triangle/attributes.hpp)'s shift
   double texels[projectors] = {};
 };
@@ -154,6 +154,7 @@ Reference reference_of(const spanlight::prepare::PreparedStorage& prepared) {
       const glm::dvec4& x = tri[k].projector[static_cast<std::size_t>(j)];
       ref.s[j][k] = x.x;
       ref.t[j][k] = x.y;
+      ref.r[j][k] = x.z;
       ref.q[j][k] = x.w;
       for (int c = 0; c < 4; ++c) largest = std::max(largest, std::fabs(x[c]) * 0x1p32);
     }
@@ -210,6 +211,7 @@ struct ExactBounds {
   double weights_sum_low;  // the budget's premise: far above its sum of c_i (attribute_error_budget.hpp)
   double uv, uv_rho;
   double projector[projectors], projector_rho[projectors];
+  double projector_r[projectors];  // r/q's bound (the same divide as s/q's), in r/q; < 0 as projector
   double uv_divisor, projector_divisor[projectors];  // the divisors' relative error against the truth
 };
 
@@ -237,6 +239,10 @@ ExactBounds exact_bounds(const Reference& ref, const ReferencePixel& p, double e
     point.q_value = p.q[j];
     const double e = budget::projector_exact(point, w);
     b.projector[j] = e < 0.0 ? -1.0 : e * ref.texels[j];
+    budget::ProjectorPoint r_point = point;  // r in place of s and t: the bound of r/q alone
+    for (int k = 0; k < 3; ++k) r_point.s[k] = r_point.t[k] = ref.r[j][k];
+    r_point.s_value = r_point.t_value = p.r[j];
+    b.projector_r[j] = budget::projector_exact(r_point, w);
     // The projector's divisor is q~ times the weights' sum: the relative errors compound.
     const double c = (1.0 + budget::q_error(point, w) / p.q[j]) * (1.0 + w.divisor_relative) - 1.0;
     b.projector_rho[j] = against_fixed(c);
@@ -411,14 +417,26 @@ void check_triangle(const spanlight::prepare::PreparedStorage& prepared, const S
         const double truth_s = std::clamp(p.s[j] / p.q[j], -4.0, 4.0), truth_t = std::clamp(p.t[j] / p.q[j], -4.0, 4.0);
         if (mode[j] == Mode::constant_outside) {
           // Held at the first pixel's values: the light is off all along, so the truth must lie outside
-          // [0, 1] on the side the held value does in one of s/q, t/q, r/q, up to its exact error.
-          const double e = bounds[i].projector[j] / ref.texels[j];
+          // [0, 1] on the side the held value does in one of s/q, t/q, r/q. The walk holds a span whose
+          // exact ends lie outside one side: with q > 0 all along each ratio is monotonic along the row,
+          // so the truth at every pixel lies between the truths at the ends, and it is outside up to the
+          // larger of the ends' errors (or its own, for a span held for values beyond the limit).
+          if (bounds[a].projector[j] < 0.0 || bounds[b].projector[j] < 0.0) {  // an end's q within its error of 0
+            ++tally.behind;
+            continue;
+          }
+          auto widest = [&](double (ExactBounds::*member)[projectors]) {
+            return std::max({(bounds[i].*member)[j], (bounds[a].*member)[j], (bounds[b].*member)[j]});
+          };
+          const double e_st = widest(&ExactBounds::projector) / ref.texels[j], e_r = widest(&ExactBounds::projector_r);
           const PixelValues& first = fixed[a].second;
           const std::int32_t held[3] = {first.s[j], first.t[j], first.r[j]};
           const double truth[3] = {truth_s, truth_t, p.r[j] / p.q[j]};
           bool outside = false;
-          for (int k = 0; k < 3; ++k)
+          for (int k = 0; k < 3; ++k) {
+            const double e = k < 2 ? e_st : e_r;
             outside = outside || (held[k] < 0 && truth[k] <= e) || (held[k] > (1 << 28) && truth[k] >= 1.0 - e);
+          }
           tally.outside_wrong += !outside;
           continue;
         }

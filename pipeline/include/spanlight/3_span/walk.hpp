@@ -165,8 +165,9 @@ struct GroupSpan {
       take_per_pixel(first, c0);
       return;
     }
-    // q > 0 all along: s/q, t/q and r/q are monotonic along the row (ratios of linear
-    // functions without a pole), so a projector outside one side at both ends is outside all along.
+    // q > 0 all along: s/q, t/q and r/q are monotonic along the row (ratios of linear functions
+    // without a pole), so a projector outside one side at both exact ends is outside all along, up
+    // to the ends' own errors (attribute_property_test checks every held pixel against that bound).
     if (group != uv_group && outside_all_along(first, last)) {
       take_constant(first, c1);
       return;

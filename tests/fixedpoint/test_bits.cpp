@@ -112,6 +112,36 @@ TEST_CASE("a 32x16 product from two 16x16 products equals the native product", "
   }
 }
 
+TEST_CASE("the narrow products without a long multiply equal the native products on their domains", "[bits][multiply]") {
+  // The ARMv6-M forms, whatever this host's has_long_multiply says: x in [0, 2^28], n < 2^13 and
+  // 12 <= s < 32 for the shifted one; a < 2^25, b < 2^24 for the rounded high word.
+  auto shifted = [](std::uint32_t x, std::uint32_t n, int s) { return std::uint64_t{x} * n >> s; };
+  auto rounded_high = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t{a} * b + 0x80000000u) >> 32; };
+  const std::uint32_t xs[] = {0u, 1u, 0xFFFu, 0x1000u, 0x1001u, (1u << 28) - 1u, 1u << 28};
+  const std::uint32_t ns[] = {0u, 1u, 2u, 4095u, 4096u, 8191u};
+  for (const std::uint32_t x : xs)
+    for (const std::uint32_t n : ns)
+      for (int s = 12; s < 32; ++s)
+        REQUIRE(static_cast<std::uint64_t>(fixedpoint::mul_u28_u13_split(static_cast<std::int32_t>(x), static_cast<std::int32_t>(n), s)) ==
+                shifted(x, n, s));
+  const std::uint32_t as[] = {0u, 1u, 0xFFFFu, 0x10000u, 0x1FFFFFFu}, bs[] = {0u, 1u, 0xFFFFu, 0x10000u, 0xFFFFFFu, 0xFF0000u};
+  for (const std::uint32_t a : as)
+    for (const std::uint32_t b : bs) REQUIRE(fixedpoint::mul_u25_u24_rounded_high_split(a, b) == rounded_high(a, b));
+  std::mt19937_64 random(20261207);
+  for (int i = 0; i < random_cases; ++i) {
+    const auto x = static_cast<std::uint32_t>(random() % ((1u << 28) + 1u)), n = static_cast<std::uint32_t>(random() & 0x1FFFu);
+    const int s = 12 + static_cast<int>(random() % 20u);
+    if (static_cast<std::uint64_t>(fixedpoint::mul_u28_u13_split(static_cast<std::int32_t>(x), static_cast<std::int32_t>(n), s)) !=
+        shifted(x, n, s))
+      FAIL("mul_u28_u13_split: x = " << x << ", n = " << n << ", s = " << s);
+    const auto a = static_cast<std::uint32_t>(random() & 0x1FFFFFFu), b = static_cast<std::uint32_t>(random() & 0xFFFFFFu);
+    if (fixedpoint::mul_u25_u24_rounded_high_split(a, b) != rounded_high(a, b)) FAIL("mul_u25_u24_rounded_high_split: a = " << a << ", b = " << b);
+  }
+  // This host's forms, at compile time.
+  STATIC_REQUIRE(fixedpoint::mul_u28_u13_shifted(1 << 28, 8191, 20) == 8191 << 8);
+  STATIC_REQUIRE(fixedpoint::mul_u25_u24_rounded_high(0x1FFFFFFu, 0xFFFFFFu) == (1u << 17));  // (2^25 - 1)(2^24 - 1) / 2^32 = 2^17 - 0.012
+}
+
 TEST_CASE("64-bit shifts by less than 32 from 32-bit operations equal the native shifts", "[bits][shift]") {
   std::mt19937_64 random(20261201);
   for (int i = 0; i < random_cases; ++i) {

@@ -156,31 +156,31 @@ TEST_CASE("pcf2x2 gives intermediate light only near the shadow's outline", "[sh
 }
 
 TEST_CASE("the shadow compare in 32 bits (a stored depth against shadow_need) is r - bias <= depth in Q1.30", "[shadow]") {
-  // r - bias over its whole range (|r| < 2^33 in Q1.30, |bias| < 2^31) against stored depths of
-  // 16 and 24 bits, at random and at the boundaries d 2^k - 1, d 2^k, d 2^k + 1 where a wrong
-  // ceiling would show.
+  // r over the frustum's [0, 1] (Q3.28) and bias over what prepare keeps, [0, 1.99] (Q1.30),
+  // against stored depths of 16 and 24 bits, at random and at the boundaries
+  // 4 r - bias = d 2^k - 1, d 2^k, d 2^k + 1 where a wrong ceiling would show.
   std::mt19937_64 random(0x5ad0);
   long long wrong = 0, compared = 0;
+  constexpr std::int32_t r_max = std::int32_t{1} << 28, bias_max = static_cast<std::int32_t>(1.99 * 1073741824.0);
   for (const int depth_bits : {16, 24}) {
     const int k = 30 - depth_bits;
     const std::uint32_t top = (1u << depth_bits) - 1u;
-    auto check = [&](std::int64_t r_biased, std::uint32_t stored) {
-      const bool exact = r_biased <= (std::int64_t{stored} << k);
-      wrong += exact != (stored >= spanlight::shadow_need(r_biased, depth_bits));
+    auto check = [&](std::int32_t r, std::int32_t bias, std::uint32_t stored) {
+      const bool exact = 4 * std::int64_t{r} - bias <= (std::int64_t{stored} << k);
+      wrong += exact != (stored >= spanlight::shadow_need(r, bias, depth_bits));
       ++compared;
     };
     for (int n = 0; n < 200000; ++n) {
       const auto stored = static_cast<std::uint32_t>(random() & top);
-      const std::int64_t near = (std::int64_t{stored} << k) + static_cast<std::int64_t>(random() % 3) - 1;
-      check(near, stored);
-      const std::int64_t any = static_cast<std::int64_t>(random() % ((std::uint64_t{1} << 35) + (std::uint64_t{1} << 32))) -
-                               (std::int64_t{1} << 33) - (std::int64_t{1} << 31);
-      check(any, stored);
+      const auto r = static_cast<std::int32_t>(random() % (r_max + 1ull));
+      check(r, static_cast<std::int32_t>(random() % (bias_max + 1ull)), stored);
+      // bias for 4 r - bias = stored 2^k + e, e in {-1, 0, 1}, where it is in range
+      const std::int64_t near = 4 * std::int64_t{r} - (std::int64_t{stored} << k) - static_cast<std::int64_t>(random() % 3) + 1;
+      if (near >= 0 && near <= bias_max) check(r, static_cast<std::int32_t>(near), stored);
     }
     for (const std::uint32_t stored : {0u, 1u, top - 1u, top})
-      for (const std::int64_t r : {std::int64_t{-(1ll << 33) - (1ll << 31) + 1}, std::int64_t{-1}, std::int64_t{0}, std::int64_t{1},
-                                   (std::int64_t{top} << k) + 1, std::int64_t{(1ll << 33) + (1ll << 31) - 1}})
-        check(r, stored);
+      for (const std::int32_t r : {0, 1, r_max - 1, r_max})
+        for (const std::int32_t bias : {0, 1, bias_max - 1, bias_max}) check(r, bias, stored);
   }
   INFO(compared << " compares");
   CHECK(wrong == 0);

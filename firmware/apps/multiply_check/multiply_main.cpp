@@ -1,5 +1,6 @@
 // multiply_check: every 32 x 32 -> 64 product of fixedpoint/bits.hpp (mul_u32, mul_s32,
-// mul_s32_u32, mul_s32_nonnegative, mul_s32_setup, mul_u32_u16, mul_s64_u16, mul_s64_u32) against the compiler's
+// mul_s32_u32, mul_s32_nonnegative, mul_s32_setup, mul_u32_u16, mul_s64_u16, mul_s64_u32, and
+// the narrow ones mul_u28_u13_shifted and mul_u25_u24_rounded_high on their domains) against the compiler's
 // int64 multiply (libgcc's __aeabi_lmul on Cortex-M0+, an independent implementation), over
 // the operands' edge values paired with each other and 2^20 pseudo-random pairs. On Cortex-M0+
 // the first four are Thumb-1 assembly that the host never runs: frames equal to the host's
@@ -35,6 +36,13 @@ void check(std::uint32_t a, std::uint32_t b) {
   const std::int64_t wide = signed_product >> 20;
   wrong += mul_s64_u16(wide, b & 0xFFFFu) != wide * static_cast<std::int64_t>(b & 0xFFFFu);
   wrong += mul_s64_u32(wide >> 12, b) != (wide >> 12) * static_cast<std::int64_t>(b);
+  // x in [0, 2^28] and n < 2^13, shifted by 12 .. 31; a < 2^25 and b < 2^24, rounded at 2^32.
+  const std::uint32_t x = a % ((1u << 28) + 1u), n = b & 0x1FFFu;
+  const int shift = 12 + static_cast<int>((a ^ b) % 20u);
+  wrong += static_cast<std::uint32_t>(mul_u28_u13_shifted(static_cast<std::int32_t>(x), static_cast<std::int32_t>(n), shift)) !=
+           static_cast<std::uint32_t>(std::uint64_t{x} * n >> shift);
+  const std::uint32_t a25 = a >> 7, b24 = b >> 8;
+  wrong += mul_u25_u24_rounded_high(a25, b24) != static_cast<std::uint32_t>((std::uint64_t{a25} * b24 + 0x80000000u) >> 32);
   sink = signed_product;
 }
 

@@ -185,6 +185,41 @@ inline constexpr bool has_long_multiply = true;
   else return (std::uint64_t{(a >> 16) * b} << 16) + (a & 0xFFFFu) * b;  // each product < 2^32
 }
 
+// floor(x n / 2^s) for 0 <= x <= 2^28, 0 <= n < 2^13 and 12 <= s < 32: a Q.28 fraction of a
+// size with 28 - s fraction bits kept (a texel coordinate in a projector's image or shadow map),
+// the product below 2^41. Without a long multiply, two 32-bit products: x = a 2^12 + b (a <= 2^16,
+// b < 2^12) and a n is an integer, so floor((a n 2^12 + b n) / 2^s) =
+// floor((a n + floor(b n / 2^12)) / 2^(s - 12)), with a n < 2^29 and b n < 2^25.
+[[gnu::always_inline]] constexpr std::int32_t mul_u28_u13_split(std::int32_t x, std::int32_t n, int s) {
+  const auto ux = static_cast<std::uint32_t>(x), un = static_cast<std::uint32_t>(n);
+  return static_cast<std::int32_t>(((ux >> 12) * un + (((ux & 0xFFFu) * un) >> 12)) >> (s - 12));
+}
+[[gnu::always_inline]] constexpr std::int32_t mul_u28_u13_shifted(std::int32_t x, std::int32_t n, int s) {
+  if constexpr (has_long_multiply) {
+    return static_cast<std::int32_t>(std::uint64_t{static_cast<std::uint32_t>(x)} * static_cast<std::uint32_t>(n) >> s);
+  } else {
+    return mul_u28_u13_split(x, n, s);
+  }
+}
+
+// round(a b / 2^32), halves up, for a < 2^25 and b < 2^24 (the product below 2^49). Without a
+// long multiply, four 16 x 16 products and no carries: with a = ah 2^16 + al, b = bh 2^16 + bl,
+// a b + 2^31 = ah bh 2^32 + (ah bl + al bh + 2^15) 2^16 + al bl, and the low 16 bits of al bl
+// cannot reach the next multiple of 2^16, so the result is
+// ah bh + floor((ah bl + al bh + 2^15 + floor(al bl / 2^16)) / 2^16); ah bl < 2^25, al bh < 2^24,
+// the sum below 2^26.
+[[gnu::always_inline]] constexpr std::uint32_t mul_u25_u24_rounded_high_split(std::uint32_t a, std::uint32_t b) {
+  const std::uint32_t al = a & 0xFFFFu, ah = a >> 16, bl = b & 0xFFFFu, bh = b >> 16;
+  return ah * bh + ((ah * bl + al * bh + 0x8000u + ((al * bl) >> 16)) >> 16);
+}
+[[gnu::always_inline]] constexpr std::uint32_t mul_u25_u24_rounded_high(std::uint32_t a, std::uint32_t b) {
+  if constexpr (has_long_multiply) {
+    return static_cast<std::uint32_t>((std::uint64_t{a} * b + (std::uint64_t{1} << 31)) >> 32);
+  } else {
+    return mul_u25_u24_rounded_high_split(a, b);
+  }
+}
+
 // x * g when the product fits int64, without __muldi3 on ARMv6-M: the low word's product (by
 // low_product, exact) plus the high word's, which adds to the high word only.
 template <std::uint64_t (*low_product)(std::uint32_t, std::uint32_t)>

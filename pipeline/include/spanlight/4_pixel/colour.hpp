@@ -35,6 +35,8 @@ struct Colour {
 [[gnu::always_inline]] constexpr std::uint32_t blue(Colour c) { return c.rb & 255u; }
 inline constexpr Colour white{0x00FF00FFu, 255u};
 inline constexpr Colour black{0u, 0u};
+// One test of both words, inline (GCC -Os calls the defaulted operator== out of line).
+[[gnu::always_inline]] constexpr bool is_black(Colour c) { return (c.rb | c.g) == 0u; }
 
 // round(a * b / 255) for a, b in [0, 255], exact (Blinn's trick).
 [[gnu::always_inline]] constexpr std::uint32_t mul255(std::uint32_t a, std::uint32_t b) {

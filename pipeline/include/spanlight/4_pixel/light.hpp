@@ -42,7 +42,7 @@ struct Light {
 [[gnu::always_inline]] inline Texel16 falloff_factor(const TextureData& falloff, std::int32_t r) {
   const TextureLevel& level = falloff.levels[0];
   Texel16 f;
-  const auto x8 = static_cast<std::int32_t>(fixedpoint::mul_s32(r, level.width) >> (shadow_proj_frac_bits - 8));
+  const std::int32_t x8 = fixedpoint::mul_u28_u13_shifted(r, level.width, shadow_proj_frac_bits - 8);
   if (falloff.filter == Filter::nearest) {
     const std::int32_t x = (x8 >> 8) < level.width ? (x8 >> 8) : level.width - 1;
     const std::int32_t y = level.height / 2;  // floor(0.5 * height), below height
@@ -77,25 +77,24 @@ template <Features F, typename DepthT>
   }
   const TextureLevel& level = light.image->levels[0];
   // Image texel coordinates with 8 sub-texel bits: s in [0, 1] Q.28 times the size (< 2^13).
-  const auto x8 = static_cast<std::int32_t>(fixedpoint::mul_s32(s, level.width) >> (shadow_proj_frac_bits - 8));
-  const auto y8 = static_cast<std::int32_t>(fixedpoint::mul_s32(t, level.height) >> (shadow_proj_frac_bits - 8));
+  const std::int32_t x8 = fixedpoint::mul_u28_u13_shifted(s, level.width, shadow_proj_frac_bits - 8);
+  const std::int32_t y8 = fixedpoint::mul_u28_u13_shifted(t, level.height, shadow_proj_frac_bits - 8);
   const Texel16 texel = projector_texel(*light.image, x8, y8, F.bilinear);
   // colour (Q8.8) * shadow (Q.8) [* falloff (Q.16), rounded back to Q.16] * texel (8.16, unrounded),
   // rounded once to 8-bit levels.
   const std::uint16_t* colour = light.projector->color;
-  std::uint32_t scale[3] = {colour[0] * shadow, colour[1] * shadow, colour[2] * shadow};  // < 2^25
+  std::uint32_t scale[3] = {colour[0] * shadow, colour[1] * shadow, colour[2] * shadow};  // < 2^16 * 2^8
   if constexpr (F.falloff) {
     if (light.falloff != nullptr) {
       const Texel16 f = falloff_factor(*light.falloff, r);
       const std::uint32_t factor[3] = {f.r, f.g, f.b};
-      for (int c = 0; c < 3; ++c)  // < 2^25 * 2^16.01: 64 bits
+      for (int c = 0; c < 3; ++c)  // < 2^24 * 2^16: 64 bits; rounded back below 2^24
         scale[c] = static_cast<std::uint32_t>((fixedpoint::mul_u32(scale[c], factor[c]) + 0x8000u) >> 16);
     }
   }
   auto channel = [&](std::uint32_t c, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
-    const std::uint64_t product = fixedpoint::mul_u32(c, v);  // < 2^25 * 2^24
-    const std::uint64_t levels = (product + (std::uint64_t{1} << 31)) >> 32;
-    return levels > 255u ? 255u : static_cast<std::uint32_t>(levels);
+    const std::uint32_t levels = fixedpoint::mul_u25_u24_rounded_high(c, v);  // c < 2^24, v < 2^24
+    return levels > 255u ? 255u : levels;
   };
   return colour_of(channel(scale[0], texel.r), channel(scale[1], texel.g), channel(scale[2], texel.b));
 }

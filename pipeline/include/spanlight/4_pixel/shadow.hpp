@@ -14,11 +14,12 @@ namespace spanlight {
 inline constexpr int shadow_proj_frac_bits = 28;  // s/q, t/q, r/q arrive in Q3.28
 
 // A texel lets the light through when r/q - bias <= its depth: with the map's depth d (its top
-// depth_bits of Q1.30) that is r_biased <= d 2^k, k = 30 - depth_bits, and for an integer d
-// the same as ceil(r_biased / 2^k) <= d: one 32-bit compare a tap against `need`.
-[[gnu::always_inline]] constexpr std::uint32_t shadow_need(std::int64_t r_biased, int depth_bits) {
-  // |r_biased| < 2^33 + 2^31 (Q3.28 r shifted to Q1.30, less the bias), k >= 6: the quotient fits 2^28.
-  const std::int32_t need = -fixedpoint::floor_shifted_right(-r_biased, 30 - depth_bits);  // ceil: floor of the negation
+// depth_bits of Q1.30) that is 4 r - bias <= d 2^k, k = 30 - depth_bits, and for an integer d
+// the same as ceil((4 r - bias) / 2^k) <= d: one 32-bit compare a tap against `need`.
+// r in [0, 1] (Q3.28, inside the frustum) and bias in [0, 1.99] (Q1.30, as prepared), so
+// bias - 4 r lies in [-2^30, 2^31): one word, and the ceiling is minus the floor of its negation.
+[[gnu::always_inline]] constexpr std::uint32_t shadow_need(std::int32_t r, std::int32_t bias, int depth_bits) {
+  const std::int32_t need = -((bias - (r << (30 - shadow_proj_frac_bits))) >> (30 - depth_bits));  // >>: floor
   return need < 0 ? 0u : static_cast<std::uint32_t>(need);  // every depth >= 0 lets a negative one through
 }
 
@@ -31,17 +32,17 @@ template <typename DepthT>
   return map + (size - 1 - clamp_index(y_from_bottom, size)) * size;
 }
 
-// Fraction of light let through, in 1/256 (0..256).
+// Fraction of light let through, in 1/256 (0..256), at (s, t, r) inside the frustum (each in [0, 1], Q3.28).
 template <bool Pcf, typename DepthT>
 [[gnu::always_inline]] inline std::uint32_t shadow_factor(const ProjectorData& p, const DepthT* map, std::int32_t s, std::int32_t t,
                                    std::int32_t r, int depth_bits) {
   const std::int32_t size = p.map_size;
-  const std::uint32_t need = shadow_need((std::int64_t{r} << (30 - shadow_proj_frac_bits)) - p.bias, depth_bits);
+  const std::uint32_t need = shadow_need(r, p.bias, depth_bits);
   if constexpr (Pcf) {
     if (p.filter == ShadowFilter::pcf2x2) {
       // Map coordinates with 8 fraction bits, shifted to texel centres.
-      const std::int32_t xs = static_cast<std::int32_t>(fixedpoint::mul_s32(s, size) >> (shadow_proj_frac_bits - 8)) - 128;
-      const std::int32_t ys = static_cast<std::int32_t>(fixedpoint::mul_s32(t, size) >> (shadow_proj_frac_bits - 8)) - 128;
+      const std::int32_t xs = fixedpoint::mul_u28_u13_shifted(s, size, shadow_proj_frac_bits - 8) - 128;
+      const std::int32_t ys = fixedpoint::mul_u28_u13_shifted(t, size, shadow_proj_frac_bits - 8) - 128;
       const std::int32_t x0 = xs >> 8, y0 = ys >> 8;
       const std::uint32_t fx = static_cast<std::uint32_t>(xs) & 255u, fy = static_cast<std::uint32_t>(ys) & 255u;
       const DepthT *row0 = shadow_row(map, size, y0), *row1 = shadow_row(map, size, y0 + 1);
@@ -51,8 +52,8 @@ template <bool Pcf, typename DepthT>
       return (lit + 128u) >> 8;
     }
   }
-  const std::int32_t x = static_cast<std::int32_t>(fixedpoint::mul_s32(s, size) >> shadow_proj_frac_bits);
-  const std::int32_t y = static_cast<std::int32_t>(fixedpoint::mul_s32(t, size) >> shadow_proj_frac_bits);
+  const std::int32_t x = fixedpoint::mul_u28_u13_shifted(s, size, shadow_proj_frac_bits);
+  const std::int32_t y = fixedpoint::mul_u28_u13_shifted(t, size, shadow_proj_frac_bits);
   return shadow_row(map, size, y)[clamp_index(x, size)] >= need ? 256u : 0u;
 }
 

@@ -182,7 +182,7 @@ struct LightKernel {
         hooks.touched(Pass::light, pixel);
         if (lights && p.inside()) {
           const Colour add = projector_light<F>(light, p.s_now(), p.t_now(), p.r_now(), 32 - depth.shift);
-          if (add != black) {
+          if (!is_black(add)) {
             typename Color::Storage* c = band.color + pixel * Color::per_pixel;
             Color::store(c, add_light(Color::load(c), add));
           }
@@ -335,7 +335,7 @@ struct FusedKernel {
         for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
           if (on[j] && p[j].inside()) {
             const Colour add = projector_light<F>(lights[j], p[j].s_now(), p[j].t_now(), p[j].r_now(), 32 - depth.shift);
-            if (add != black) light = Color::quantize(add_light(light, add));
+            if (!is_black(add)) light = Color::quantize(add_light(light, add));
           }
         });
         Color::store(c + k * Color::per_pixel, modulate(light, sample(u, v, k)));

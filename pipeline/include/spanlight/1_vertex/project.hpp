@@ -5,6 +5,7 @@
 // rounding to 1/256 px.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
@@ -67,13 +68,12 @@ constexpr ScreenVertex project(const Vec4Wide& c, int width, int height) {
   // for a cut vertex within lerp's rounding of the eye (w of a few raw units), where that
   // rounding is a sizeable part of w. Clamping restores the bound and changes nothing else.
   constexpr std::int64_t limit = (std::int64_t{1} << 21) - 1;
-  auto clamp_to_limit = [](std::int64_t value) { return value > limit ? limit : (value < -limit ? -limit : value); };
   // mul_s64_u32: the product without __muldi3 on ARMv6-M.
   const auto x_scale = static_cast<std::uint32_t>(width) << (subpixel_bits - 1), y_scale = static_cast<std::uint32_t>(height) << (subpixel_bits - 1);
-  v.x = static_cast<std::int32_t>(clamp_to_limit(round_q32_to_int64(fixedpoint::mul_s64_u32(x_ratio, x_scale))));
-  v.y = static_cast<std::int32_t>(clamp_to_limit(round_q32_to_int64(fixedpoint::mul_s64_u32(y_ratio, y_scale))));
+  v.x = static_cast<std::int32_t>(std::clamp(round_q32_to_int64(fixedpoint::mul_s64_u32(x_ratio, x_scale)), -limit, limit));
+  v.y = static_cast<std::int32_t>(std::clamp(round_q32_to_int64(fixedpoint::mul_s64_u32(y_ratio, y_scale)), -limit, limit));
   const std::int64_t z = (z_ratio + (std::int64_t{1} << 2)) >> 3;  // /2, Q.32 -> Q.30
-  v.z = static_cast<std::int32_t>(z < 0 ? 0 : (z > (1 << depth_frac_bits) ? (1 << depth_frac_bits) : z));
+  v.z = static_cast<std::int32_t>(std::clamp(z, std::int64_t{0}, std::int64_t{1} << depth_frac_bits));
   v.inv_w_mantissa = div.rcp.mantissa;
   v.inv_w_exponent = div.rcp.shift + div.k;
   return v;

@@ -33,6 +33,7 @@
 // fraction of the two levels' difference).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
@@ -243,7 +244,7 @@ constexpr RunLevel run_level(std::int32_t value, std::int32_t step, std::int32_t
 // [0, last_level]. lambda within +-2^24: adding the half does not overflow.
 constexpr RunLevel segment_level(const LodPlanes& p, const TriangleSetup& t, std::int32_t first, std::int32_t last) {
   const std::int32_t k = (lod_q16_at(p, t, first + ((last - first) >> 1)) + (1 << 15)) >> 16;
-  return {k < 0 ? 0 : (k > p.last_level ? p.last_level : k), 0, 0, true};
+  return {std::clamp(k, std::int32_t{0}, p.last_level), 0, 0, true};
 }
 
 }  // namespace spanlight

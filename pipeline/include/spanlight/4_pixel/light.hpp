@@ -4,6 +4,7 @@
 // in 8-bit levels.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
@@ -52,7 +53,7 @@ struct Light {
     // Texel centres at half-integers: x - 1/2 clamped to [0, width - 1], y = height / 2 - 1/2.
     std::int32_t x = x8 - 128;
     const std::int32_t x_max = (level.width - 1) << 8;
-    x = x < 0 ? 0 : (x > x_max ? x_max : x);
+    x = std::clamp(x, std::int32_t{0}, x_max);
     const std::int32_t y = level.height * 128 - 128;
     f = bilinear_texel16(taps_at(level.texels + (y >> 8) * level.stride + (x >> 8), level.stride, static_cast<std::uint32_t>(x) & 255u,
                                  static_cast<std::uint32_t>(y) & 255u));

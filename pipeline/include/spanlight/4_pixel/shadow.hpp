@@ -4,6 +4,7 @@
 // Depth is compared in Q1.30; the map keeps its top depth_bits.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
@@ -25,7 +26,7 @@ inline constexpr int shadow_proj_frac_bits = 28;  // s/q, t/q, r/q arrive in Q3.
 
 // Map indices clamp to [0, size - 1]; rows are stored from the top, y counts from the bottom.
 [[gnu::always_inline]] constexpr std::int32_t clamp_index(std::int32_t i, std::int32_t size) {
-  return i < 0 ? 0 : (i >= size ? size - 1 : i);
+  return std::clamp(i, std::int32_t{0}, size - 1);
 }
 template <typename DepthT>
 [[gnu::always_inline]] inline const DepthT* shadow_row(const DepthT* map, std::int32_t size, std::int32_t y_from_bottom) {

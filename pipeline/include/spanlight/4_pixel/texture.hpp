@@ -11,6 +11,7 @@
 //   c = round(sum c_ij w_ij / 2^16),  w_00 = (256 - fx)(256 - fy), ..., w_11 = fx fy.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
@@ -166,8 +167,8 @@ struct NearestRepeatOfSize {
 // (x0 in [0, width - 1]; the frame holds column `width` for the zero weight).
 [[gnu::always_inline]] inline Taps bilinear_clamp_taps(const TexelGrid& g, std::int32_t x, std::int32_t y) {
   const std::int32_t x_max = (g.width - 1) << g.frac, y_max = (g.height - 1) << g.frac;
-  x = x < 0 ? 0 : (x > x_max ? x_max : x);
-  y = y < 0 ? 0 : (y > y_max ? y_max : y);
+  x = std::clamp(x, std::int32_t{0}, x_max);
+  y = std::clamp(y, std::int32_t{0}, y_max);
   const int weight_shift = g.frac - 8;
   return taps_at(g.texels + (y >> g.frac) * g.stride + (x >> g.frac), g.stride, (static_cast<std::uint32_t>(x) >> weight_shift) & 255u,
                  (static_cast<std::uint32_t>(y) >> weight_shift) & 255u);
@@ -201,8 +202,8 @@ template <Wrap W>
 [[gnu::always_inline]] inline Colour nearest(const TexelGrid& g, std::int32_t u, std::int32_t v) {
   std::int32_t x = u >> g.frac, y = v >> g.frac;
   if constexpr (W == Wrap::clamp) {
-    x = x < 0 ? 0 : (x >= g.width ? g.width - 1 : x);
-    y = y < 0 ? 0 : (y >= g.height ? g.height - 1 : y);
+    x = std::clamp(x, std::int32_t{0}, g.width - 1);
+    y = std::clamp(y, std::int32_t{0}, g.height - 1);
   } else {
     if (x < 0 || y < 0 || x >= g.width || y >= g.height) return black;
   }

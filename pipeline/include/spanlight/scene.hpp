@@ -72,7 +72,7 @@ struct ProjectorData {
   bool shadows;
   ShadowFilter filter;
   std::uint16_t map_size;
-  std::int32_t bias;             // window-depth units, Q1.30
+  std::int32_t bias;             // window-depth units, Q1.30, in [0, 1.99] (shadow_need relies on it)
 };
 
 struct PreparedScene {

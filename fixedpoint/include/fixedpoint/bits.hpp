@@ -214,6 +214,14 @@ inline constexpr bool has_long_multiply = true;
 }
 [[gnu::always_inline]] constexpr std::uint32_t mul_u25_u24_rounded_high(std::uint32_t a, std::uint32_t b) {
   if constexpr (has_long_multiply) {
+#if defined(__arm__)
+    // One UMLAL onto the rounding half (GCC forms the 64-bit sum with two more instructions).
+    if (!std::is_constant_evaluated()) {
+      std::uint32_t lo = 0x80000000u, hi = 0;
+      __asm__("umlal %[lo], %[hi], %[a], %[b]" : [lo] "+r"(lo), [hi] "+r"(hi) : [a] "r"(a), [b] "r"(b));
+      return hi;
+    }
+#endif
     return static_cast<std::uint32_t>((std::uint64_t{a} * b + (std::uint64_t{1} << 31)) >> 32);
   } else {
     return mul_u25_u24_rounded_high_split(a, b);

@@ -20,9 +20,10 @@
 namespace spanlight {
 
 
+// base + (d1 b1 + d2 b2) / 2^30 for weights b in [0, 2^30] (barycentrics are clamped there, and
+// the perspective ones are unsigned quotients): |d| < 2^31, each product < 2^61, the sum < 2^62.
 constexpr std::int32_t mix3(std::int32_t base, std::int32_t d1, std::int32_t d2, std::int32_t b1, std::int32_t b2) {
-  // |d| < 2^31, b <= 2^30: each product < 2^61, the sum < 2^62.
-  return static_cast<std::int32_t>(base + ((fixedpoint::mul_s32(d1, b1) + fixedpoint::mul_s32(d2, b2)) >> 30));
+  return static_cast<std::int32_t>(base + ((fixedpoint::mul_s32_nonnegative(d1, b1) + fixedpoint::mul_s32_nonnegative(d2, b2)) >> 30));
 }
 
 constexpr std::int32_t saturate_proj(std::int64_t x) {
@@ -42,10 +43,10 @@ constexpr ScreenWeights screen_weights(const TriangleSetup& t, std::int64_t e1, 
   return {barycentric(t, e1), barycentric(t, e2)};
 }
 
-// Window depth in Q0.32 at a point: z0 + dz1 l1 + dz2 l2, with the products kept
+// Window depth in Q0.32 at a point: z0 + dz1 l1 + dz2 l2 (l in [0, 2^30]), with the products kept
 // to Q.32 (|dz| <= 2^30, l <= 2^30: each < 2^60), clamped into [0, 2^32 - 1].
 constexpr std::uint32_t depth_q32(const TriangleSetup& t, const ScreenWeights& w) {
-  const std::int64_t z = (std::int64_t{t.z0} << 2) + ((fixedpoint::mul_s32(t.dz1, w.l1) + fixedpoint::mul_s32(t.dz2, w.l2)) >> 28);
+  const std::int64_t z = (std::int64_t{t.z0} << 2) + ((fixedpoint::mul_s32_nonnegative(t.dz1, w.l1) + fixedpoint::mul_s32_nonnegative(t.dz2, w.l2)) >> 28);
   return z < 0 ? 0u : (z > 0xFFFFFFFF ? 0xFFFFFFFFu : static_cast<std::uint32_t>(z));
 }
 

@@ -3,14 +3,18 @@
 // division by zero, overflow or out-of-range shift on these paths aborts it.
 #include <catch2/catch.hpp>
 
+#include <climits>
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "fixedpoint/reciprocal.hpp"
 #include "float_model/float_model.hpp"
 #include "pipeline_support.hpp"
+#include "spanlight/3_span/exact.hpp"
 
 namespace pt = spanlight::ptest;
 namespace sc = spanlight::scene;
@@ -207,4 +211,42 @@ TEST_CASE("a projector whose image is one texel lights as a larger image of the 
   for (std::size_t i = 0; i < b.rgb.size(); i += 3) lit += b.rgb[i] > 31;  // brighter than ambient alone
   CHECK(lit > 100);
   CHECK(a.rgb == b.rgb);
+}
+
+TEST_CASE("divide_q28 in word shifts is n * mantissa >> (shift - 28) saturated at +-2^30, for every d's length", "[projector]") {
+  auto reference = [](std::int32_t n, const fixedpoint::Reciprocal& r) {
+    const std::int64_t q = (std::int64_t{n} * r.mantissa) >> (r.shift - spanlight::proj_frac_bits);
+    return q > spanlight::proj_limit ? spanlight::proj_limit : (q < -spanlight::proj_limit ? -spanlight::proj_limit : static_cast<std::int32_t>(q));
+  };
+  std::mt19937 random(20261207);
+  long long wrong = 0, saturated = 0, compared = 0;
+  auto check = [&](std::int32_t n, std::uint32_t d) {
+    for (const fixedpoint::Reciprocal r : {fixedpoint::reciprocal<8, 1>(d), fixedpoint::reciprocal<6, 0>(d)}) {
+      const std::int32_t expected = reference(n, r);
+      wrong += spanlight::divide_q28(n, r) != expected;
+      saturated += expected == spanlight::proj_limit || expected == -spanlight::proj_limit;
+      ++compared;
+    }
+  };
+  for (int length = 1; length <= 32; ++length) {  // d in [2^(length-1), 2^length): shift - 28 runs over [3, 34]
+    const std::uint32_t low = 1u << (length - 1);
+    for (const std::uint32_t d : {low, low + (low - 1u) / 2u, low + (low - 1u)}) {
+      for (const std::int32_t n : {0, 1, -1, INT32_MAX, INT32_MIN + 1, 1 << 28, -(1 << 28)}) check(n, d);
+    }
+    for (int k = 0; k < 20000; ++k) {
+      const std::uint32_t d = low + (length == 1 ? 0u : static_cast<std::uint32_t>(random()) % low);
+      // n across its magnitudes, so each d sees quotients inside [-2^30, 2^30] and beyond.
+      const auto n = static_cast<std::int32_t>(static_cast<std::uint32_t>(random()) >> (random() % 32u));
+      check(k % 2 == 0 ? n : (n == INT32_MIN ? INT32_MIN + 1 : -n), d);
+      // the boundary: n / d near +-4 (2^30 in Q3.28) for the d that allow it
+      if (d < (1u << 29)) {
+        const std::int32_t edge = static_cast<std::int32_t>(4 * d) + static_cast<std::int32_t>(random() % 5u) - 2;
+        check(edge, d);
+        check(-edge, d);
+      }
+    }
+  }
+  INFO(compared << " quotients, " << saturated << " saturated");
+  CHECK(saturated > 1000);
+  CHECK(wrong == 0);
 }

@@ -26,13 +26,22 @@ constexpr std::int32_t mix3(std::int32_t base, std::int32_t d1, std::int32_t d2,
   return static_cast<std::int32_t>(base + ((fixedpoint::mul_s32_nonnegative(d1, b1) + fixedpoint::mul_s32_nonnegative(d2, b2)) >> 30));
 }
 
-constexpr std::int32_t saturate_proj(std::int64_t x) {
-  return x > proj_limit ? proj_limit : (x < -proj_limit ? -proj_limit : static_cast<std::int32_t>(x));
-}
-
-// n / d in Q3.28 given rcp = R::of(d), d > 0, |n| < 2^31: n * mantissa < 2^62.
+// n / d in Q3.28 given rcp = R::of(d) for a 32-bit d > 0, |n| < 2^31, saturated at +-proj_limit
+// (2^30). The product p = n * mantissa has |p| < 2^62 and s = shift - 28 lies in [3, 34] (shift =
+// 62 - clz32(d)). With hi = floor(p / 2^32): for s >= 32 the quotient floor(p / 2^s) is
+// hi >> (s - 32), within [-2^30, 2^30), nothing to saturate; for s < 32, hi >> (s - 2) is the
+// quotient's floor(/ 2^30): 0 or -1 puts it in [-2^30, 2^30), where it is the low word of p >> s,
+// anything else beyond the limit of its sign. Word shifts only: a 64-bit shift by a run-time
+// amount is a libgcc call on ARMv6-M.
 constexpr std::int32_t divide_q28(std::int32_t n, const fixedpoint::Reciprocal& rcp) {
-  return saturate_proj(fixedpoint::mul_s32_u32(n, rcp.mantissa) >> (rcp.shift - proj_frac_bits));
+  const std::int64_t p = fixedpoint::mul_s32_u32(n, rcp.mantissa);
+  const int s = rcp.shift - proj_frac_bits;
+  const auto hi = static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<std::uint64_t>(p) >> 32));
+  if (s >= 32) return hi >> (s - 32);  // arithmetic: floor
+  const std::int32_t above = hi >> (s - 2);
+  if (above > 0) return proj_limit;
+  if (above < -1) return -proj_limit;
+  return static_cast<std::int32_t>(fixedpoint::low_word_shifted_right(static_cast<std::uint64_t>(p), s));
 }
 
 // The screen barycentrics lambda_1, lambda_2 (Q0.30) at a point, from its exact edge values.

@@ -66,6 +66,12 @@ TEST_CASE("bit helpers", "[bits]") {
   static_assert(fixedpoint::clz32(1) == 31 && fixedpoint::clz64(std::uint64_t{1} << 40) == 23);
   static_assert(fixedpoint::saturate32(std::int64_t{1} << 40) == INT32_MAX && fixedpoint::saturate32(INT64_MIN) == INT32_MIN);
   SUCCEED();
+  for (int b = 0; b < 64; ++b) {  // every leading-one position, with and without bits below it
+    const std::uint64_t x = std::uint64_t{1} << b;
+    CHECK(fixedpoint::bit_length_by_words(x) == b + 1);
+    CHECK(fixedpoint::bit_length_by_words(x | (x - 1)) == b + 1);
+  }
+  CHECK(fixedpoint::bit_length_by_words(0) == 0);
 }
 
 // The ARMv6-M products (four 16x16 multiplies) against the host's native 64-bit product:

@@ -281,6 +281,12 @@ constexpr std::int64_t mul_shift_wide(std::int64_t a, std::int32_t b, int s) {
 // Number of bits needed to hold x (0 for 0), for 32-bit values: one 32-bit count (on ARMv6-M
 // __clzsi2 alone, where bit_length's 64-bit count goes through __clzdi2).
 constexpr int bit_length32(std::uint32_t x) { return x == 0 ? 0 : 32 - clz32(x); }
+// bit_length from the word that holds the leading one: one 32-bit count, where clz64 is a
+// __clzdi2 call (itself calling __clzsi2) on ARMv6-M.
+constexpr int bit_length_by_words(std::uint64_t x) {
+  const auto hi = static_cast<std::uint32_t>(x >> 32);
+  return hi != 0 ? 64 - clz32(hi) : bit_length32(static_cast<std::uint32_t>(x));
+}
 
 // x 2^s as a 64-bit value, for any int32 x and 0 <= s < 32: the low word is x's shifted, the
 // high word floor(x / 2^(32 - s)), the bits shifted out with the sign filling in.

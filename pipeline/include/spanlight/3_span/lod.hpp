@@ -54,7 +54,7 @@ inline constexpr std::uint32_t log2_q16_table[33] = {
 // (1/32)^2 / (8 ln 2) = 2^-12.5 of it, the position's truncation adds 2^-16:
 // |error| < 2^-12.3.
 constexpr std::int32_t log2_q16(std::uint64_t x) {
-  const int e = fixedpoint::bit_length(x) - 1;
+  const int e = fixedpoint::bit_length_by_words(x) - 1;
   // The 32 bits after the leading one (x normalised to [2^32, 2^33), its low word), by
   // 32-bit shifts: (lo << 1) << (31 - e) is lo << (32 - e) without UB at e = 0.
   const std::uint32_t below = e >= 32 ? fixedpoint::low_word_shifted_right(x, e - 32)
@@ -68,9 +68,10 @@ constexpr std::int32_t log2_q16(std::uint64_t x) {
 constexpr std::int32_t log2_length2_q16(std::int64_t a, std::int64_t b) {
   const std::uint64_t ua = static_cast<std::uint64_t>(a < 0 ? -a : a), ub = static_cast<std::uint64_t>(b < 0 ? -b : b);
   const std::uint64_t larger = ua > ub ? ua : ub;
-  const int k = fixedpoint::bit_length(larger) > 31 ? fixedpoint::bit_length(larger) - 31 : 0;
-  const std::uint64_t sa = ua >> k, sb = ub >> k;  // < 2^31: the squares' sum below 2^63; relative error 2^-30
-  return log2_q16(sa * sa + sb * sb) + 2 * k * 65536;
+  const int k = fixedpoint::bit_length_by_words(larger) > 31 ? fixedpoint::bit_length_by_words(larger) - 31 : 0;  // <= 33
+  // < 2^31 each, by word shifts: the squares (32 x 32 products) sum below 2^63; relative error 2^-30.
+  const std::uint32_t sa = fixedpoint::word_shifted_right(ua, k), sb = fixedpoint::word_shifted_right(ub, k);
+  return log2_q16(fixedpoint::mul_u32(sa, sa) + fixedpoint::mul_u32(sb, sb)) + 2 * k * 65536;
 }
 
 // The triangle's part of lambda, for trilinear objects.
@@ -128,7 +129,9 @@ constexpr LodPlanes lod_planes(const TriangleSetup& t, const ScreenVertex* const
 // is the same all along it, so its length's logarithm is taken once.
 constexpr void set_lod_row(LodPlanes& p, std::int32_t row) {
   p.row_y = row * 256 + 128;
-  const std::int64_t xu = p.b[0] * p.row_y + p.ax[0], xv = p.b[1] * p.row_y + p.ax[1];
+  // row_y >= 0: the products (which fit int64) without __muldi3 on ARMv6-M.
+  const auto y = static_cast<std::uint32_t>(p.row_y);
+  const std::int64_t xu = fixedpoint::mul_s64_u32(p.b[0], y) + p.ax[0], xv = fixedpoint::mul_s64_u32(p.b[1], y) + p.ax[1];
   p.along_x_q16 = xu == 0 && xv == 0 ? INT32_MIN : log2_length2_q16(xu, xv);
 }
 
@@ -149,7 +152,8 @@ constexpr std::int32_t lod_q16_at_x(const LodPlanes& p, const TriangleSetup& t, 
   }
   if (h == 0) return lod_q16_zero;
   // d/dy's numerator has the opposite sign (x_m - x): lengths do not see it.
-  const std::int64_t yu = p.b[0] * x_s + p.ay[0], yv = p.b[1] * x_s + p.ay[1];
+  const auto x = static_cast<std::uint32_t>(x_s);  // a point of the view: x_s >= 0
+  const std::int64_t yu = fixedpoint::mul_s64_u32(p.b[0], x) + p.ay[0], yv = fixedpoint::mul_s64_u32(p.b[1], x) + p.ay[1];
   const bool flat_y = yu == 0 && yv == 0;
   const std::int32_t along_x = p.along_x_q16;
   if (along_x == INT32_MIN && flat_y) return lod_q16_zero;

@@ -29,22 +29,16 @@ struct MipLevel {
 
 // Level k of a texture whose level-0 grid (with the object's uv_frac_bits) is `g0`.
 constexpr MipLevel mip_level(const TextureData& texture, const TexelGrid& g0, int k) {
-  MipLevel m{};
+  // Every field set in each branch, no zeroing first (a memset call at -Os).
   const TextureLevel& level = texture.levels[k];
   const auto extra = (std::uint32_t{1} << k) - 1u;  // half level-0 texels further back
   if (texture.wrap == Wrap::repeat) {
     // A side of one texel reads the same texel at both taps: its shift stops at 32.
     const int x_shift = g0.x_shift + k > 32 ? 32 : g0.x_shift + k, y_shift = g0.y_shift + k > 32 ? 32 : g0.y_shift + k;
-    m.grid = {level.texels, level.stride, level.width, level.height, g0.frac, x_shift, y_shift};
-    m.back_x = extra << (g0.x_shift - 1);
-    m.back_y = extra << (g0.y_shift - 1);
-    m.x_down = x_shift - 8;
-    m.y_down = y_shift - 8;
-  } else {
-    m.grid = texel_grid(level, g0.frac + k);
-    m.back_x = m.back_y = extra << (g0.frac - 1);
+    return {{level.texels, level.stride, level.width, level.height, g0.frac, x_shift, y_shift},
+            extra << (g0.x_shift - 1), extra << (g0.y_shift - 1), x_shift - 8, y_shift - 8};
   }
-  return m;
+  return {texel_grid(level, g0.frac + k), extra << (g0.frac - 1), extra << (g0.frac - 1), 0, 0};
 }
 
 // A repeating level's taps. The top shift - 8 bits hold the texel index and the

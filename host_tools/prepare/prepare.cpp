@@ -174,7 +174,8 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
     if (p.shadows) {
       d.filter = p.shadows->filter == scene::ShadowFilter::pcf2x2 ? ShadowFilter::pcf2x2 : ShadowFilter::nearest;
       d.map_size = static_cast<std::uint16_t>(p.shadows->map_size);
-      d.bias = static_cast<std::int32_t>(std::llround(std::min(p.shadows->bias, 1.99) * 1073741824.0));
+      // bias >= 0 (the loader's rule); above 1.99 the compare is the same, and the pipeline's word needs it there.
+      d.bias = static_cast<std::int32_t>(std::min<long long>(std::llround(std::min(p.shadows->bias, 2.0) * 1073741824.0), max_shadow_bias));
     }
     out->projectors.push_back(d);
   }

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "pipeline_support.hpp"
@@ -146,6 +147,24 @@ void check_every_mismatch(std::uint8_t depth_bits) {
   SECTION("a shadow map one texel short or one too many") {
     refused({.map = -1}, fused, RenderStatus::shadow_map_missing, scene.height, 0);
     refused({.map = +1}, fused, RenderStatus::shadow_map_missing, scene.height, 0);
+  }
+  SECTION("a shadow bias outside [0, max_shadow_bias], and the limit itself") {
+    auto with_bias = [&](std::int32_t bias) {
+      spanlight::ProjectorData projector = scene.projectors[0];
+      projector.bias = bias;
+      spanlight::PreparedScene altered = scene;
+      altered.projectors = &projector;
+      B b(scene, scene.height, {});
+      const RenderStatus status = spanlight::render_frame<spanlight::host_features(Format)>(altered, prepared->matrices, b.target(), fused);
+      CHECK(b.guards_intact());
+      return std::pair{status, b.untouched()};
+    };
+    for (const std::int32_t bias : {-1, spanlight::max_shadow_bias + 1, INT32_MAX}) {
+      const auto [status, untouched] = with_bias(bias);
+      CHECK(status == RenderStatus::shadow_bias_out_of_range);
+      CHECK(untouched);
+    }
+    for (const std::int32_t bias : {0, spanlight::max_shadow_bias}) CHECK(with_bias(bias).first == RenderStatus::ok);
   }
   SECTION("band buffers too small for the band, and a band taller than the frame") {
     refused({.color = -1}, fused, RenderStatus::colour_too_small, 7, 7);

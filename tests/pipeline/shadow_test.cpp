@@ -156,12 +156,13 @@ TEST_CASE("pcf2x2 gives intermediate light only near the shadow's outline", "[sh
 }
 
 TEST_CASE("the shadow compare in 32 bits (a stored depth against shadow_need) is r - bias <= depth in Q1.30", "[shadow]") {
-  // r over the frustum's [0, 1] (Q3.28) and bias over what prepare keeps, [0, 1.99] (Q1.30),
+  // r over the frustum's [0, 1] (Q3.28) and bias over what render_frame takes, [0, max_shadow_bias] (Q1.30),
   // against stored depths of 16 and 24 bits, at random and at the boundaries
   // 4 r - bias = d 2^k - 1, d 2^k, d 2^k + 1 where a wrong ceiling would show.
   std::mt19937_64 random(0x5ad0);
   long long wrong = 0, compared = 0;
-  constexpr std::int32_t r_max = std::int32_t{1} << 28, bias_max = static_cast<std::int32_t>(1.99 * 1073741824.0);
+  constexpr std::int32_t r_max = std::int32_t{1} << 28, bias_max = spanlight::max_shadow_bias;
+  CHECK(bias_max == std::llround(1.99 * 1073741824.0));  // the 1.99 prepare clamps to
   for (const int depth_bits : {16, 24}) {
     const int k = 30 - depth_bits;
     const std::uint32_t top = (1u << depth_bits) - 1u;

@@ -39,6 +39,7 @@ enum class RenderStatus : std::uint8_t {
   depth_type_too_narrow, // 24-bit depth asked of 16-bit depth storage
   vertices_too_small,    // the vertex buffer holds fewer than the scene's max_vertex_count
   bad_pose,              // render_frame_at_pose: the pose's matrices cannot be built (PoseResult, pose.hpp)
+  shadow_bias_out_of_range,  // a shadowed projector's bias outside [0, max_shadow_bias] (scene.hpp)
 };
 
 // What each status means, for messages.
@@ -56,6 +57,7 @@ constexpr const char* describe(RenderStatus s) {
     case RenderStatus::depth_type_too_narrow: return "24-bit depth needs 32-bit depth storage";
     case RenderStatus::vertices_too_small: return "the vertex buffer is smaller than the scene's largest object (max_vertex_count)";
     case RenderStatus::bad_pose: return "the pose's matrices cannot be built (a view, frustum or model out of range)";
+    case RenderStatus::shadow_bias_out_of_range: return "a shadowed projector's bias is outside [0, max_shadow_bias] (1.99 in Q1.30)";
   }
   return "unknown status";
 }
@@ -82,6 +84,7 @@ constexpr RenderStatus check_frame(const PreparedScene& scene, const FrameTarget
     if (static_cast<std::size_t>(j) >= target.shadow_maps.size() ||
         target.shadow_maps[static_cast<std::size_t>(j)].size() != std::size_t{p.map_size} * p.map_size)
       return RenderStatus::shadow_map_missing;
+    if (p.bias < 0 || p.bias > max_shadow_bias) return RenderStatus::shadow_bias_out_of_range;
   }
   return RenderStatus::ok;
 }

@@ -72,8 +72,12 @@ struct ProjectorData {
   bool shadows;
   ShadowFilter filter;
   std::uint16_t map_size;
-  std::int32_t bias;             // window-depth units, Q1.30, in [0, 1.99] (shadow_need relies on it)
+  std::int32_t bias;             // window-depth units, Q1.30, in [0, max_shadow_bias]
 };
+
+// The largest shadow bias, 1.99 in Q1.30 (round(1.99 * 2^30)): prepare clamps to it, render_frame
+// refuses more, and shadow_need's one-word compare needs 4 r - bias to fit 32 bits.
+inline constexpr std::int32_t max_shadow_bias = 2136746230;
 
 struct PreparedScene {
   std::uint16_t width, height;

@@ -17,7 +17,7 @@ inline constexpr int shadow_proj_frac_bits = 28;  // s/q, t/q, r/q arrive in Q3.
 // A texel lets the light through when r/q - bias <= its depth: with the map's depth d (its top
 // depth_bits of Q1.30) that is 4 r - bias <= d 2^k, k = 30 - depth_bits, and for an integer d
 // the same as ceil((4 r - bias) / 2^k) <= d: one 32-bit compare a tap against `need`.
-// r in [0, 1] (Q3.28, inside the frustum) and bias in [0, 1.99] (Q1.30, as prepared), so
+// r in [0, 1] (Q3.28, inside the frustum) and bias in [0, max_shadow_bias] (1.99 in Q1.30, scene.hpp), so
 // bias - 4 r lies in [-2^30, 2^31): one word, and the ceiling is minus the floor of its negation.
 [[gnu::always_inline]] constexpr std::uint32_t shadow_need(std::int32_t r, std::int32_t bias, int depth_bits) {
   const std::int32_t need = -((bias - (r << (30 - shadow_proj_frac_bits))) >> (30 - depth_bits));  // >>: floor

@@ -23,10 +23,11 @@ echo "QEMU TCG counts of the measured region (one render_frame call, all passes)
 echo "Flash = .text + .rodata + .data (constants live in .text here); \"pipeline\" is flash minus the"
 echo "scene's own data (textures, geometry, matrices: the symbols in namespace \`baked\`). RAM = .data +"
 echo ".bss (colour, depth, shadow maps, tie mask), without the 64 KiB stack reserve; stack peak is the"
-echo "painted-stack high-water mark."
+echo "painted-stack high-water mark of the whole app, and render_frame's stack the part the frame itself"
+echo "takes below its caller (the stack painted again just before the call: \`hal::stack_mark\`)."
 echo
-echo "| scene | target | instructions/frame | covered px | per covered px | flash | pipeline flash | RAM (.data+.bss) | stack peak |"
-echo "|---|---|---:|---:|---:|---:|---:|---:|---:|"
+echo "| scene | target | instructions/frame | covered px | per covered px | flash | pipeline flash | RAM (.data+.bss) | stack peak | render_frame's stack |"
+echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"
 for app in "$build"/firmware-cortex-m7/bin/render_*.elf; do
   scene=$(basename "$app" .elf)
   scene=${scene#render_}
@@ -37,10 +38,10 @@ for app in "$build"/firmware-cortex-m7/bin/render_*.elf; do
     (cd "$work" && bash "$measure" --cpu "$cpu" --plugin "$plugin" "$elf" "$scene-$cpu.ppm" > "$log")
     instructions=$(measured "$log" instructions)
     covered=$(measured "$log" covered_pixels)
-    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$scene" "$cpu" \
+    printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$scene" "$cpu" \
       "$(awk -v i="$instructions" 'BEGIN { printf "%.2f M", i / 1e6 }')" "$covered" \
       "$(awk -v i="$instructions" -v c="$covered" 'BEGIN { printf "%.0f", i / c }')" \
-      "$(measured "$log" flash)" "$(measured "$log" pipeline_flash)" "$(measured "$log" ram)" "$(measured "$log" stack_peak)"
+      "$(measured "$log" flash)" "$(measured "$log" pipeline_flash)" "$(measured "$log" ram)" "$(measured "$log" stack_peak)" "$(measured "$log" render_stack)"
     echo "." >&2
   done
 done

@@ -5,5 +5,6 @@
 namespace spanlight::hal {
 
 std::size_t stack_peak_bytes() { return spanlight_stack_peak_bytes(); }
+std::size_t stack_mark() { return spanlight_stack_mark(); }
 
 }  // namespace spanlight::hal

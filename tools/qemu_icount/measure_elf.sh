@@ -7,6 +7,7 @@
 #   spanlight-measure: regions N1 N2 ...     each measured region (one when the app measures once)
 #   spanlight-measure: covered_pixels N      from the app's "covered N pixels" (omitted if it says none)
 #   spanlight-measure: stack_peak N          bytes, from the app's "stack peak N bytes"
+#   spanlight-measure: render_stack N        bytes render_frame itself takes, from "render_frame stack N bytes"
 #   spanlight-measure: flash N               .text + .rodata + .data
 #   spanlight-measure: scene_data N          the baked scene's own data: every symbol in namespace baked
 #   spanlight-measure: pipeline_flash N      flash - scene_data (the pipeline, HAL, start-up and libc)
@@ -51,6 +52,8 @@ covered=$(sed -n 's/.*covered \([0-9]*\) pixels.*/\1/p' "$log" | head -n 1)
 [ -z "$covered" ] || echo "spanlight-measure: covered_pixels $covered"
 stack=$(sed -n 's/.*stack peak \([0-9]*\) bytes.*/\1/p' "$log" | head -n 1)
 [ -z "$stack" ] || echo "spanlight-measure: stack_peak $stack"
+render_stack=$(sed -n 's/.*render_frame stack \([0-9]*\) bytes.*/\1/p' "$log" | head -n 1)
+[ -z "$render_stack" ] || echo "spanlight-measure: render_stack $render_stack"
 
 # Bytes of one section (0 when absent), and of the baked scene's symbols.
 section() { arm-none-eabi-size -A "$elf" | awk -v s="$1" '$1 == s { print $2; f = 1 } END { if (!f) print 0 }'; }

@@ -10,6 +10,7 @@
 // A firmware engineer's own app looks like this: declare the buffers the baked
 // configuration asks for (baked_frame.hpp), call render_frame, push the colour buffer
 // to a display.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -44,9 +45,12 @@ int spanlight::hal::app_main(Args args) {
   }
   CostCounter cost;
   apps::BandSink<baked::features.format> bands{{}, band_rows ? &sink : nullptr, line, baked::width, &cost};
+  const std::size_t app_peak = stack_peak_bytes();  // before stack_mark forgets it
+  const std::size_t depth_at_call = stack_mark();
   cost.begin();
   const RenderStatus status = render_frame<baked::features>(baked::scene, baked::matrices, target, baked::knobs, bands);
   cost.end();
+  const std::size_t render_stack = stack_peak_bytes() - depth_at_call;  // the frame's own stack, hooks included
   if (status != RenderStatus::ok) {
     log_line(LogLine() << "render_baked: render_frame refused the frame: " << describe(status));
     return 1;
@@ -61,6 +65,7 @@ int spanlight::hal::app_main(Args args) {
   const std::uint32_t covered = Frame::covered_pixels(baked::knobs.depth_bits);
   log_line(LogLine() << "render_baked: " << baked::scene_name << " " << baked::width << "x" << baked::height
                      << " in " << cost.elapsed() << " " << CostCounter::unit() << ", band rows " << band_rows << ", covered " << covered
-                     << " pixels, stack peak " << stack_peak_bytes() << " bytes -> " << out);
+                     << " pixels, stack peak " << std::max(app_peak, stack_peak_bytes()) << " bytes, render_frame stack "
+                     << render_stack << " bytes -> " << out);
   return 0;
 }

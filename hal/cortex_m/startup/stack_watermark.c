@@ -13,6 +13,16 @@ size_t spanlight_stack_peak_bytes(void) {
   return (size_t)((uintptr_t)__stack_top - (uintptr_t)word);
 }
 
+size_t spanlight_stack_mark(void) {
+  uint32_t *sp;
+  __asm volatile("mov %0, sp" : "=r"(sp));
+  /* Below sp nothing is in use (this leaf function keeps its loop in registers): paint it again. */
+  for (uint32_t *word = __stack_limit; word < sp; ++word) {
+    *word = SPANLIGHT_STACK_PAINT;
+  }
+  return (size_t)((uintptr_t)__stack_top - (uintptr_t)sp);
+}
+
 size_t spanlight_stack_size_bytes(void) {
   return (size_t)((uintptr_t)__stack_top - (uintptr_t)__stack_limit);
 }

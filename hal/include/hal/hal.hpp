@@ -97,5 +97,9 @@ class CostCounter {
 
 // Deepest stack use so far in bytes, from the stack paint on Cortex-M; 0 on host (not measured).
 std::size_t stack_peak_bytes();
+// Forgets the peak below the caller (read stack_peak_bytes() first) and returns the stack in
+// use at the caller, so that stack_peak_bytes() - stack_mark() after a call is that call's own
+// depth: what render_frame needs of the stack, apart from the app around it. 0 on host.
+std::size_t stack_mark();
 
 }  // namespace spanlight::hal

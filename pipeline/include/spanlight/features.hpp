@@ -64,6 +64,22 @@ constexpr bool supports(const Features& f, const Knobs& k) {
 // Array slots for up to n projectors (at least one: C++ has no empty arrays).
 constexpr std::size_t projector_slots(int n) { return n > 0 ? static_cast<std::size_t>(n) : 1u; }
 
+// One T per projector, as a member of the per-triangle and per-run state: with
+// [[no_unique_address]] it takes no bytes at all in a build without projectors
+// (P = 0), where an array would keep one unused slot (a clip vertex's is 32
+// bytes, and a clipped triangle holds 18 of them). Indexed only for projectors
+// j < P: with none, nothing can index it.
+template <typename T, int P>
+struct PerProjector {
+  T slot[static_cast<std::size_t>(P)];
+  constexpr T& operator[](int j) { return slot[j]; }
+  constexpr const T& operator[](int j) const { return slot[j]; }
+};
+template <typename T>
+struct PerProjector<T, 0> {
+  [[noreturn]] T& operator[](int) const { __builtin_unreachable(); }
+};
+
 // Calls fn(j) for each projector j in [begin, end). Unrolled over the
 // compile-time maximum N, so j is a constant in each copy and a walk's
 // per-projector values stay in registers instead of an array indexed at run time.

@@ -6,3 +6,5 @@
 
 // For the lambdas a run loop calls at each pixel: [&](...) SPANLIGHT_LAMBDA_INLINE_ATTR { ... }.
 #define SPANLIGHT_LAMBDA_INLINE_ATTR __attribute__((always_inline))
+// For a lambda kept out of line so that its locals are not in its caller's frame.
+#define SPANLIGHT_LAMBDA_NOINLINE_ATTR __attribute__((noinline))

@@ -19,7 +19,7 @@ template <int MaxProjectors>
 struct ClipVertex {
   Vec4Wide clip;
   std::int32_t u, v;
-  Vec4Wide proj[projector_slots(MaxProjectors)];  // (s, t, r, q), Q31.32
+  [[no_unique_address]] PerProjector<Vec4Wide, MaxProjectors> proj;  // (s, t, r, q), Q31.32
 };
 
 // A triangle clipped by 6 planes has at most 3 + 6 vertices.
@@ -83,33 +83,70 @@ constexpr std::int32_t crossing(std::int64_t da, std::int64_t db) {
   return static_cast<std::int32_t>(fixedpoint::div_mod(scaled, static_cast<std::uint32_t>(den)).quotient);
 }
 
+// Written in place (out must be neither a nor b): a returned vertex would be one more
+// temporary on the stack for each of the two cuts.
 template <int P>
-constexpr ClipVertex<P> lerp_vertex(const ClipVertex<P>& a, const ClipVertex<P>& b, std::int32_t t,
-                                    int projector_begin, int projector_end) {
-  ClipVertex<P> out{};
+constexpr void lerp_vertex(const ClipVertex<P>& a, const ClipVertex<P>& b, std::int32_t t, int projector_begin,
+                           int projector_end, ClipVertex<P>& out) {
   out.clip = lerp_wide(a.clip, b.clip, t);
   out.u = static_cast<std::int32_t>(lerp_wide(a.u, b.u, t));
   out.v = static_cast<std::int32_t>(lerp_wide(a.v, b.v, t));
   for (int j = projector_begin; j < projector_end; ++j) out.proj[j] = lerp_wide(a.proj[j], b.proj[j], t);
-  return out;
 }
 
+// Cuts the polygon by one plane, in place: edge i (vertex i to i + 1) gives
+// vertex i when it is inside and the crossing when the edge crosses, in that
+// order, as the two-buffer Sutherland-Hodgman does, with two vertices of
+// scratch instead of a second polygon (9 vertices of 40 + 32 P bytes: a frame's
+// stack peak runs through here). Writes run ahead of reads by at most the
+// number of exits (inside to outside) so far, so the input first moves up by
+// exits - 1 slots: one exact convex polygon leaves a plane once and needs no
+// move; a polygon that rounding has bent may leave it more often. False when
+// nothing is left, or when the cut would pass the 3 + 6 vertices a triangle
+// cut by six planes has (only a polygon rounding has bent can), so that no
+// write ever leaves the array.
 template <int P>
-constexpr void clip_against(ClipPolygon<P>& poly, ClipPlane plane, std::int64_t guard, int projector_begin,
+constexpr bool clip_against(ClipPolygon<P>& poly, ClipPlane plane, std::int64_t guard, int projector_begin,
                             int projector_end) {
-  ClipPolygon<P> out{};
-  for (int i = 0; i < poly.count; ++i) {
-    const ClipVertex<P>& a = poly.v[i];
-    const ClipVertex<P>& b = poly.v[i + 1 == poly.count ? 0 : i + 1];
-    const std::int64_t da = plane_distance(plane, a.clip, guard);
-    const std::int64_t db = plane_distance(plane, b.clip, guard);
-    if (da >= 0) out.v[out.count++] = a;
+  const int n = poly.count;
+  std::int64_t d[max_clipped_vertices];
+  bool any_out = false;
+  for (int i = 0; i < n; ++i) {
+    d[i] = plane_distance(plane, poly.v[i].clip, guard);
+    any_out |= d[i] < 0;
+  }
+  if (!any_out) return true;
+  int exits = 0, count = 0;
+  for (int i = 0; i < n; ++i) {
+    const bool in = d[i] >= 0, next_in = d[i + 1 == n ? 0 : i + 1] >= 0;
+    count += (in ? 1 : 0) + (in != next_in ? 1 : 0);
+    exits += in && !next_in ? 1 : 0;
+  }
+  const int shift = exits > 1 ? exits - 1 : 0;
+  if (count < 3 || count > max_clipped_vertices || n + shift > max_clipped_vertices) return false;
+  for (int i = n - 1; shift > 0 && i >= 0; --i) poly.v[i + shift] = poly.v[i];
+  // Vertex k of the input is at poly.v[shift + k] until a write reaches it: the write for edge i
+  // lands at or below i + exits <= shift + i + 1, whose vertex is already read (into `next`).
+  const ClipVertex<P> first = poly.v[shift];
+  ClipVertex<P> scratch[2];
+  const ClipVertex<P>* a = &first;
+  int kept = 0;
+  for (int i = 0; i < n; ++i) {
+    const ClipVertex<P>* b = &first;
+    if (i + 1 < n) {
+      scratch[i & 1] = poly.v[shift + i + 1];
+      b = &scratch[i & 1];
+    }
+    const std::int64_t da = d[i], db = d[i + 1 == n ? 0 : i + 1];
+    if (da >= 0) poly.v[kept++] = *a;
     // Always cut from the inside vertex, so the same edge gives the same
     // point whichever triangle it belongs to (watertight across neighbours).
-    if (da >= 0 && db < 0) out.v[out.count++] = lerp_vertex(a, b, crossing(da, db), projector_begin, projector_end);
-    if (da < 0 && db >= 0) out.v[out.count++] = lerp_vertex(b, a, crossing(db, da), projector_begin, projector_end);
+    if (da >= 0 && db < 0) lerp_vertex(*a, *b, crossing(da, db), projector_begin, projector_end, poly.v[kept++]);
+    if (da < 0 && db >= 0) lerp_vertex(*b, *a, crossing(db, da), projector_begin, projector_end, poly.v[kept++]);
+    a = b;
   }
-  poly = out;
+  poly.count = kept;
+  return true;
 }
 
 // Clips in place; returns false when nothing is left. Planes a triangle does
@@ -118,12 +155,8 @@ template <int P>
 constexpr bool clip_polygon(ClipPolygon<P>& poly, std::int64_t guard, int projector_begin, int projector_end) {
   constexpr ClipPlane planes[] = {ClipPlane::near, ClipPlane::far, ClipPlane::left,
                                   ClipPlane::right, ClipPlane::bottom, ClipPlane::top};
-  for (ClipPlane plane : planes) {
-    bool any_out = false;
-    for (int i = 0; i < poly.count; ++i) any_out |= plane_distance(plane, poly.v[i].clip, guard) < 0;
-    if (any_out) clip_against(poly, plane, guard, projector_begin, projector_end);
-    if (poly.count < 3) return false;
-  }
+  for (ClipPlane plane : planes)
+    if (!clip_against(poly, plane, guard, projector_begin, projector_end)) return false;
   return true;
 }
 

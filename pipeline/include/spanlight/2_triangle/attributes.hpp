@@ -4,6 +4,7 @@
 // r/q matter).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
@@ -20,9 +21,7 @@ template <int P>
 struct TriangleAttributes {
   std::int32_t u0, du1, du2, v0, dv1, dv2;  // texel coordinates * 2^uv_frac_bits (|u| < 2^29)
   // per projector: (s, t, r, q) at vertex 0 and the deltas, normalised so |value| < 2^30
-  std::int32_t proj0[projector_slots(P)][4];
-  std::int32_t proj_d1[projector_slots(P)][4];
-  std::int32_t proj_d2[projector_slots(P)][4];
+  [[no_unique_address]] PerProjector<std::int32_t[4], P> proj0, proj_d1, proj_d2;
 };
 
 // The attributes of the triangle whose vertices `v` are, in setup order.
@@ -47,8 +46,7 @@ constexpr void set_projector(const ClipVertex<P>* const (&v)[3], int j, Triangle
     }
   }
   // One shift for all twelve values keeps their ratios.
-  const int excess = fixedpoint::bit_length(largest) - 30;
-  const int shift = excess > 0 ? excess : 0;
+  const int shift = std::max(fixedpoint::bit_length(largest) - 30, 0);
   auto at = [&](int vertex, int c) {
     const Vec4Wide& p = v[vertex]->proj[j];
     const std::int64_t value = c == 0 ? p.x : (c == 1 ? p.y : (c == 2 ? p.z : p.w));

@@ -11,6 +11,7 @@
 // triangle (w > 0 at every drawn vertex; window y points down, which flips it).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
@@ -31,7 +32,7 @@ constexpr int projector_orientation(const Vec4Wide& a, const Vec4Wide& b, const 
       const std::uint64_t m = static_cast<std::uint64_t>(x < 0 ? -x : x);
       largest = m > largest ? m : largest;
     }
-  const int shift = fixedpoint::bit_length(largest) > 20 ? fixedpoint::bit_length(largest) - 20 : 0;
+  const int shift = std::max(fixedpoint::bit_length(largest) - 20, 0);
   std::int64_t m[3][3];
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k) m[i][k] = in[i][k] >> shift;

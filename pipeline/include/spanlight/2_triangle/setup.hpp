@@ -22,67 +22,72 @@ namespace spanlight {
 // right edge from above; a horizontal edge admits a whole row or none of it.
 // Top-left rule: bias 0 on top and left edges, 1 on the others, so a centre
 // exactly on a shared edge belongs to one triangle only.
+// Only E and the bound need 64 bits (|E| < 2^45); everything else is a word,
+// which keeps the per-row steps single adds on Cortex-M0+ and the setup's
+// three edges 48 bytes each on the stack.
 struct Edge {
-  std::int64_t slope;      // dE per column, -256*dy
-  std::int64_t row_value;  // E at column 0 of the current row
-  std::int64_t row_step;   // 256*dx
-  std::int32_t bias;
+  std::int64_t row_value;  // E at column 0 of the current row, |.| < 2^45
   // floor((row_value - bias) / |slope|) kept incrementally: quotient + remainder.
   std::int64_t quotient;
-  std::int64_t remainder;  // in [0, |slope|)
-  std::int64_t quotient_step, remainder_step;
+  std::int32_t slope;      // dE per column, -256*dy: |.| < 2^30
+  std::int32_t row_step;   // 256*dx: |.| < 2^30
+  std::int32_t bias;
+  std::int32_t divisor;    // |slope|; 0 for a horizontal edge (no bound)
+  std::int32_t remainder;  // in [0, divisor): a remainder plus a step stays below 2^31
+  std::int32_t quotient_step;   // floor(row_step / divisor): |.| <= 2^30 / 256 (divisor >= 256)
+  std::int32_t remainder_step;  // in [0, divisor)
 
-  constexpr void start(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by, std::int64_t row0_centre_y) {
-    const std::int64_t dx = bx - ax, dy = by - ay;
+  constexpr void start(std::int32_t ax, std::int32_t ay, std::int32_t bx, std::int32_t by, std::int32_t row0_centre_y) {
+    const std::int32_t dx = bx - ax, dy = by - ay;  // |.| < 2^22
     const bool top_left = dy < 0 || (dy == 0 && dx > 0);
     bias = top_left ? 0 : 1;
     slope = -256 * dy;
     row_step = 256 * dx;
-    row_value = dx * (row0_centre_y - ay) - dy * (128 - ax);
-    if (slope != 0) {
-      // |slope| = 256 |dy| < 2^30, |row_value| < 2^45: exact floors without a 64-bit divide.
-      const auto d = static_cast<std::uint32_t>(slope > 0 ? slope : -slope);
+    divisor = slope > 0 ? slope : -slope;
+    // |row0_centre_y - ay|, |128 - ax| < 2^23: each product < 2^45.
+    row_value = fixedpoint::mul_s32(dx, row0_centre_y - ay) - fixedpoint::mul_s32(dy, 128 - ax);
+    if (divisor != 0) {
+      // Exact floors without a 64-bit divide.
+      const auto d = static_cast<std::uint32_t>(divisor);
       const fixedpoint::WideFloorDivMod start = fixedpoint::floor_div_wide(row_value - bias, d);
       const fixedpoint::WideFloorDivMod step = fixedpoint::floor_div_wide(row_step, d);
       quotient = start.quotient;
-      remainder = start.remainder;
-      quotient_step = step.quotient;
-      remainder_step = step.remainder;
+      remainder = static_cast<std::int32_t>(start.remainder);
+      quotient_step = static_cast<std::int32_t>(step.quotient);
+      remainder_step = static_cast<std::int32_t>(step.remainder);
     } else {
-      quotient = remainder = quotient_step = remainder_step = 0;
+      quotient = 0;
+      remainder = quotient_step = remainder_step = 0;
     }
   }
 
   constexpr void next_row() {
     row_value += row_step;
-    if (slope != 0) {
-      const std::int64_t d = slope > 0 ? slope : -slope;
+    if (divisor != 0) {
       quotient += quotient_step;
       remainder += remainder_step;
-      if (remainder >= d) {
-        remainder -= d;
+      if (remainder >= divisor) {
+        remainder -= divisor;
         ++quotient;
       }
     }
   }
 
-  // The state next_row() would reach after n rows (n >= 0), in one step: the
-  // remainders add to below (n + 1) |slope| < 2^43, so one floor division
+  // The state next_row() would reach after n rows (0 <= n < 2^13), in one step:
+  // the remainders add to below (n + 1) |slope| < 2^43, so one floor division
   // carries them into the quotient. A band skips the rows above it this way.
   constexpr void skip_rows(std::int32_t n) {
-    row_value += row_step * n;
-    if (slope != 0) {
-      const auto d = static_cast<std::uint32_t>(slope > 0 ? slope : -slope);
-      const fixedpoint::WideFloorDivMod carry = fixedpoint::floor_div_wide(remainder + remainder_step * n, d);
-      quotient += quotient_step * n + carry.quotient;
-      remainder = carry.remainder;
+    row_value += fixedpoint::mul_s32(row_step, n);
+    if (divisor != 0) {
+      const fixedpoint::WideFloorDivMod carry = fixedpoint::floor_div_wide(
+          remainder + fixedpoint::mul_s32(remainder_step, n), static_cast<std::uint32_t>(divisor));
+      quotient += fixedpoint::mul_s32(quotient_step, n) + carry.quotient;
+      remainder = static_cast<std::int32_t>(carry.remainder);
     }
   }
 
-  // |slope| = 256 |dy| < 2^30 (deltas < 2^22, see the top): a 32x32 product.
-  constexpr std::int64_t value_at(std::int32_t column) const {
-    return fixedpoint::mul_s32(static_cast<std::int32_t>(slope), column) + row_value;
-  }
+  // |slope| < 2^30: a 32x32 product.
+  constexpr std::int64_t value_at(std::int32_t column) const { return fixedpoint::mul_s32(slope, column) + row_value; }
 };
 
 struct TriangleSetup {
@@ -134,7 +139,7 @@ constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int height
   t.row_begin = r0;
   t.row_end = r1;
 
-  const std::int64_t centre_y = std::int64_t{r0} * 256 + 128;
+  const std::int32_t centre_y = r0 * 256 + 128;
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
   for (int i = 0; i < 3; ++i) {
     const ScreenVertex& a = *v[i == 2 ? 0 : i + 1];  // (i + 1) mod 3 and (i + 2) mod 3, no divide on M0+

@@ -11,6 +11,7 @@
 // on its own schedule.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "spanlight/2_triangle/attributes.hpp"
@@ -56,7 +57,7 @@ constexpr ScreenWeights screen_weights(const TriangleSetup& t, std::int64_t e1, 
 // to Q.32 (|dz| <= 2^30, l <= 2^30: each < 2^60), clamped into [0, 2^32 - 1].
 constexpr std::uint32_t depth_q32(const TriangleSetup& t, const ScreenWeights& w) {
   const std::int64_t z = (std::int64_t{t.z0} << 2) + ((fixedpoint::mul_s32_nonnegative(t.dz1, w.l1) + fixedpoint::mul_s32_nonnegative(t.dz2, w.l2)) >> 28);
-  return z < 0 ? 0u : (z > 0xFFFFFFFF ? 0xFFFFFFFFu : static_cast<std::uint32_t>(z));
+  return static_cast<std::uint32_t>(std::clamp<std::int64_t>(z, 0, 0xFFFFFFFF));
 }
 
 // Perspective-correct barycentrics beta_1, beta_2 (Q0.30) and the
@@ -140,8 +141,7 @@ struct RowInterpolation {
     a = column_a;
     length = column_b - column_a;
     const auto da = static_cast<std::uint64_t>(pa.denominator), db = static_cast<std::uint64_t>(pb.denominator);
-    const int excess = fixedpoint::bit_length(da > db ? da : db) - 31;
-    const int shift = excess > 0 ? excess : 0;
+    const int shift = std::max(fixedpoint::bit_length(std::max(da, db)) - 31, 0);
     e_a = static_cast<std::uint32_t>(da >> shift);
     e_b = static_cast<std::uint32_t>(db >> shift);
     for (int k = 0; k < 3; ++k) {

@@ -68,7 +68,7 @@ constexpr std::int32_t log2_q16(std::uint64_t x) {
 constexpr std::int32_t log2_length2_q16(std::int64_t a, std::int64_t b) {
   const std::uint64_t ua = static_cast<std::uint64_t>(a < 0 ? -a : a), ub = static_cast<std::uint64_t>(b < 0 ? -b : b);
   const std::uint64_t larger = ua > ub ? ua : ub;
-  const int k = fixedpoint::bit_length_by_words(larger) > 31 ? fixedpoint::bit_length_by_words(larger) - 31 : 0;  // <= 33
+  const int k = std::max(fixedpoint::bit_length_by_words(larger) - 31, 0);  // <= 33
   // < 2^31 each, by word shifts: the squares (32 x 32 products) sum below 2^63; relative error 2^-30.
   const std::uint32_t sa = fixedpoint::word_shifted_right(ua, k), sb = fixedpoint::word_shifted_right(ub, k);
   return log2_q16(fixedpoint::mul_u32(sa, sa) + fixedpoint::mul_u32(sb, sb)) + 2 * k * 65536;
@@ -85,6 +85,8 @@ struct LodPlanes {
   std::int32_t along_x_q16;  // log2 of d/dx's squared length on that row (constant along it); INT32_MIN: zero
   std::int32_t last_level;   // the texture's level_count - 1 (the caller sets it)
 };
+
+struct NoLodPlanes {};  // in their place in a build without trilinear textures
 
 // From the setup, its window vertices in setup order and the uv at them.
 constexpr LodPlanes lod_planes(const TriangleSetup& t, const ScreenVertex* const (&v)[3], const std::int32_t (&u)[3],
@@ -105,7 +107,7 @@ constexpr LodPlanes lod_planes(const TriangleSetup& t, const ScreenVertex* const
   }
   // One shift brings every product below 2^36: times a coordinate (< 2^21 subpixels), three
   // terms stay below 2^59. The bits it drops are 2^-36 of the largest term.
-  const int shift = fixedpoint::bit_length(largest) > 36 ? fixedpoint::bit_length(largest) - 36 : 0;
+  const int shift = std::max(fixedpoint::bit_length(largest) - 36, 0);
   for (int c = 0; c < 2; ++c) {
     const std::int64_t* pc = c == 0 ? pu : pv;
     p.b[c] = p.ax[c] = p.ay[c] = 0;
@@ -161,7 +163,7 @@ constexpr std::int32_t lod_q16_at_x(const LodPlanes& p, const TriangleSetup& t, 
   const std::int32_t twice_q16 = (along_x > along_y ? along_x : along_y) + p.constant_q16 - 4 * log2_q16(h);
   // Kept within +-2^24 (+-256 levels, far beyond any chain): a piece's sums fit 32 bits.
   const std::int32_t lambda = twice_q16 >> 1;
-  return lambda < lod_q16_zero ? lod_q16_zero : (lambda > -lod_q16_zero ? -lod_q16_zero : lambda);
+  return std::clamp(lambda, lod_q16_zero, -lod_q16_zero);
 }
 
 // At the centre of a column.

@@ -24,6 +24,7 @@
 // (PixelRun): the first pixel's values and how each further pixel moves them.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 
@@ -75,8 +76,8 @@ struct PixelRun {
   std::uint32_t z;  // Q0.32, at the first pixel
   std::int32_t dz;  // per pixel (wrapping add; the walk keeps the run within [0, z_limit])
   Stepped u, v;
-  Stepped s[projector_slots(P)], t[projector_slots(P)], r[projector_slots(P)];  // Q3.28
-  bool front[projector_slots(P)];  // q > 0 all along the run
+  [[no_unique_address]] PerProjector<Stepped, P> s, t, r;  // Q3.28
+  [[no_unique_address]] PerProjector<bool, P> front;       // q > 0 all along the run
   RunLevel level;                  // the run's mip levels and mix (trilinear objects; else zero)
 };
 
@@ -303,7 +304,7 @@ template <int P, bool UV, bool Projectors, bool Lod = false, typename Divide, ty
 inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
                       const SpanControl& control, const Divide& divide, std::int32_t c0, std::int32_t c1,
                       PixelRun<P>& run, RunFn&& run_pixels) {
-  constexpr int PS = P > 0 && Projectors ? P : 1;
+  constexpr int PS = Projectors ? P : 0;
   const GroupSource<P, Divide> src{t, a, divide};
   const ScreenWeights s0 = screen_weights(t, t.edge[1].value_at(c0), t.edge[2].value_at(c0));
 
@@ -319,7 +320,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
   }
 
   GroupSpan<2> uv;
-  GroupSpan<3> projector[projector_slots(PS)];
+  PerProjector<GroupSpan<3>, PS> projector;
   const int j0 = needs.projector_begin, j1 = needs.projector_end;
   if constexpr (UV || Projectors) {
     const ScreenWeights s1 = screen_weights(t, t.edge[1].value_at(c1), t.edge[2].value_at(c1));
@@ -359,7 +360,7 @@ inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, co
     if (z_exact) {
       const ScreenWeights s = screen_weights(t, t.edge[1].value_at(column), t.edge[2].value_at(column));
       const std::uint32_t z = depth_q32(t, s);
-      run.z = z > control.z_limit ? control.z_limit : z;
+      run.z = std::min(z, control.z_limit);
     }
     std::int32_t count = run_end - column;
     if constexpr (UV && Lod) {
@@ -425,8 +426,8 @@ inline void with_walk_shape(const SpanNeeds& needs, Fn&& fn) {
 // over the rows above the band).
 template <typename SpanFn>
 inline void rasterize_rows(TriangleSetup& t, int width, std::int32_t band_begin, std::int32_t band_end, SpanFn&& span) {
-  const std::int32_t first = t.row_begin > band_begin ? t.row_begin : band_begin;
-  const std::int32_t last = t.row_end < band_end ? t.row_end : band_end;
+  const std::int32_t first = std::max(t.row_begin, band_begin);
+  const std::int32_t last = std::min(t.row_end, band_end);
   if (first > t.row_begin)
     for (Edge& e : t.edge) e.skip_rows(first - t.row_begin);
   for (std::int32_t row = first; row < last; ++row) {

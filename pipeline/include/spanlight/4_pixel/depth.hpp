@@ -3,6 +3,7 @@
 // z-equal pass can tell a covered pixel from the background.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 
@@ -28,7 +29,7 @@ struct DepthFormat {
   }
   // The same for a depth that may lie beyond z_limit (a span evaluated per pixel).
   [[gnu::always_inline]] constexpr std::uint32_t store_clamped(std::uint32_t z_q32) const {
-    return store(z_q32 > z_limit ? z_limit : z_q32);
+    return store(std::min(z_q32, z_limit));
   }
 };
 

@@ -45,7 +45,7 @@ struct Light {
   Texel16 f;
   const std::int32_t x8 = fixedpoint::mul_u28_u13_shifted(r, level.width, shadow_proj_frac_bits - 8);
   if (falloff.filter == Filter::nearest) {
-    const std::int32_t x = (x8 >> 8) < level.width ? (x8 >> 8) : level.width - 1;
+    const std::int32_t x = std::min<std::int32_t>(x8 >> 8, level.width - 1);
     const std::int32_t y = level.height / 2;  // floor(0.5 * height), below height
     const Colour c = colour_of(level.texels[y * level.stride + x]);
     f = {red(c) << 16, green(c) << 16, blue(c) << 16};
@@ -95,7 +95,7 @@ template <Features F, typename DepthT>
   }
   auto channel = [&](std::uint32_t c, std::uint32_t v) SPANLIGHT_LAMBDA_INLINE_ATTR {
     const std::uint32_t levels = fixedpoint::mul_u25_u24_rounded_high(c, v);  // c < 2^24, v < 2^24
-    return levels > 255u ? 255u : levels;
+    return std::min<std::uint32_t>(levels, 255u);
   };
   return colour_of(channel(scale[0], texel.r), channel(scale[1], texel.g), channel(scale[2], texel.b));
 }

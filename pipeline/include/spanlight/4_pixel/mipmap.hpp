@@ -11,6 +11,7 @@
 // k's centres sit 2^k - 1 half level-0 texels further back.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "spanlight/3_span/lod.hpp"  // RunLevel
@@ -34,7 +35,7 @@ constexpr MipLevel mip_level(const TextureData& texture, const TexelGrid& g0, in
   const auto extra = (std::uint32_t{1} << k) - 1u;  // half level-0 texels further back
   if (texture.wrap == Wrap::repeat) {
     // A side of one texel reads the same texel at both taps: its shift stops at 32.
-    const int x_shift = g0.x_shift + k > 32 ? 32 : g0.x_shift + k, y_shift = g0.y_shift + k > 32 ? 32 : g0.y_shift + k;
+    const int x_shift = std::min(g0.x_shift + k, 32), y_shift = std::min(g0.y_shift + k, 32);
     return {{level.texels, level.stride, level.width, level.height, g0.frac, x_shift, y_shift},
             extra << (g0.x_shift - 1), extra << (g0.y_shift - 1), x_shift - 8, y_shift - 8};
   }

@@ -5,6 +5,7 @@
 // promise the Korobkin demo could not get from GL).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 
@@ -98,8 +99,8 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
   const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
   const AffineAttribute z = t.affine(v[i0].z, v[i1].z - v[i0].z, v[i2].z - v[i0].z, 2);  // Q1.30 -> Q0.32
   // The rows of the band the triangle covers.
-  const std::int32_t first = t.row_begin > view.row_begin ? t.row_begin : view.row_begin;
-  const std::int32_t last = t.row_end < view.row_end ? t.row_end : view.row_end;
+  const std::int32_t first = std::max(t.row_begin, view.row_begin);
+  const std::int32_t last = std::min(t.row_end, view.row_end);
   QuadraticRows uv[2];
   if (!needs.uv) {
     uv[0] = uv[1] = QuadraticRows{};  // never read; set so that no path leaves them undefined
@@ -190,7 +191,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       const ClipVertex<P>* const ordered[3] = {clip_corners[setup.order[0]], clip_corners[setup.order[1]],
                                                clip_corners[setup.order[2]]};
       if (needs.uv) set_uv<P>(ordered, attrs);
-      LodPlanes lod{};
+      // Only a build with trilinear textures keeps the 72 bytes of lambda planes on the stack.
+      [[maybe_unused]] std::conditional_t<F.trilinear, LodPlanes, NoLodPlanes> lod{};
       control.lod = nullptr;
       if constexpr (F.trilinear) {
         if (needs.lod) {
@@ -236,6 +238,32 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       for (int j = needs.projector_begin; j < needs.projector_end; ++j) cv.proj[j] = transform(to_projector[j], position);
     };
 
+    // The small path (2_triangle/small.hpp): false when the triangle is not small, or not flat
+    // enough for its quadratic uv, and the general path is to draw it. Out of line, so that its
+    // state is never on the stack under the general path's walk, where a frame's peak is.
+    auto drawn_small = [&](const ScreenVertex (&corners)[3], const std::uint32_t (&index)[3]) SPANLIGHT_LAMBDA_NOINLINE_ATTR {
+      SmallTriangle t;
+      bool covers = false;
+      if (!setup_small(corners, object.cull, view.height, t, covers)) return false;
+      if (!covers || t.row_end <= view.row_begin || t.row_begin >= view.row_end) return true;  // nothing to draw
+      std::uint32_t z_lo = 0xFFFFFFFFu, z_hi = 0;
+      for (const ScreenVertex& s : corners) {
+        const std::uint32_t z = static_cast<std::uint32_t>(s.z) << 2;
+        z_lo = z < z_lo ? z : z_lo;
+        z_hi = z > z_hi ? z : z_hi;
+      }
+      // Depth differences below 2^26 (Q0.32): the planes' rounding then stays below 2^26 * 130 * 2^-27 < 65 units.
+      const bool depth_ok = z_lo >= small_depth_margin && z_hi <= z_limit - small_depth_margin && z_hi - z_lo < (1u << 26);
+      PerspectiveWeights weights;  // set and read only for a textured object (no zeroing: a memset call)
+      const std::int32_t range = object.texture < 0 ? 0 : uv_range(object, index);
+      const bool uv_ok = object.texture < 0 ||
+                         (range < (1 << 26) && perspective_weights_of(corners, weights) &&
+                          quadratic_enough(weights, range, object.uv_frac_bits, small_texel_bits, knobs.tolerance_log2));
+      if (!depth_ok || !uv_ok) return false;
+      draw_small<P>(t, object, index, corners, weights, range, needs, view, small_run, kernel, hooks);
+      return true;
+    };
+
     for (std::uint32_t tri = 0; tri < object.triangle_count; ++tri) {
       hooks.triangle_begin();
       const std::uint32_t index[3] = {object.indices[tri * 3], object.indices[tri * 3 + 1], object.indices[tri * 3 + 2]};
@@ -243,53 +271,34 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       const CachedVertex& b = cache[index[1]];
       const CachedVertex& c = cache[index[2]];
       if (a.outside & b.outside & c.outside) continue;  // all beyond one plane
+      // The general path's clip-space vertices: the three corners, or the polygon the clip stage
+      // cuts from them. One array serves both: it is the largest thing on a frame's stack.
+      ClipPolygon<P> poly;  // v[0, count) is all that is read: no zeroing
       if ((a.outside | b.outside | c.outside) == 0) {
         if (banded && !may_cover_rows(a.screen, b.screen, c.screen, view)) continue;
         const ScreenVertex corners[3] = {a.screen, b.screen, c.screen};
-        if (small_allowed) {
-          SmallTriangle t;
-          bool covers = false;
-          if (setup_small(corners, object.cull, view.height, t, covers)) {
-            if (!covers || t.row_end <= view.row_begin || t.row_begin >= view.row_end) continue;
-            std::uint32_t z_lo = 0xFFFFFFFFu, z_hi = 0;
-            for (const ScreenVertex& s : corners) {
-              const std::uint32_t z = static_cast<std::uint32_t>(s.z) << 2;
-              z_lo = z < z_lo ? z : z_lo;
-              z_hi = z > z_hi ? z : z_hi;
-            }
-            // Depth differences below 2^26 (Q0.32): the planes' rounding then stays below 2^26 * 130 * 2^-27 < 65 units.
-            const bool depth_ok = z_lo >= small_depth_margin && z_hi <= z_limit - small_depth_margin && z_hi - z_lo < (1u << 26);
-            PerspectiveWeights weights;  // set and read only for a textured object (no zeroing: a memset call)
-            const std::int32_t range = object.texture < 0 ? 0 : uv_range(object, index);
-            const bool uv_ok = object.texture < 0 ||
-                               (range < (1 << 26) && perspective_weights_of(corners, weights) &&
-                                quadratic_enough(weights, range, object.uv_frac_bits, small_texel_bits, knobs.tolerance_log2));
-            if (depth_ok && uv_ok) {
-              draw_small<P>(t, object, index, corners, weights, range, needs, view, small_run, kernel, hooks);
-              continue;
-            }
-          }
-        }
-        ClipVertex<P> clip[3];
-        for (int k = 0; k < 3; ++k) {
-          clip[k].u = needs.uv ? object.uvs[index[k] * 2] : 0;
-          clip[k].v = needs.uv ? object.uvs[index[k] * 2 + 1] : 0;
+        if (small_allowed && drawn_small(corners, index)) continue;
+        for (int k = 0; k < 3; ++k) {  // the window corners come from the cache: no clip position
+          ClipVertex<P>& corner = poly.v[k];
+          corner.u = needs.uv ? object.uvs[index[k] * 2] : 0;
+          corner.v = needs.uv ? object.uvs[index[k] * 2 + 1] : 0;
           for (int j = needs.projector_begin; j < needs.projector_end; ++j)
-            clip[k].proj[j] = transform(to_projector[j], object.positions + index[k] * 3);
+            corner.proj[j] = transform(to_projector[j], object.positions + index[k] * 3);
         }
-        const ClipVertex<P>* const clip_corners[3] = {&clip[0], &clip[1], &clip[2]};
+        const ClipVertex<P>* const clip_corners[3] = {&poly.v[0], &poly.v[1], &poly.v[2]};
         draw_general(corners, clip_corners);
         continue;
       }
       // A vertex beyond a clip plane: the triangle is cut from its positions again.
-      ClipPolygon<P> poly{};
       poly.count = 3;
       for (int k = 0; k < 3; ++k) clip_vertex(index[k], poly.v[k]);
       if (!clip_polygon(poly, guard, needs.projector_begin, needs.projector_end)) continue;
-      ScreenVertex screen[max_clipped_vertices];
-      for (int k = 0; k < poly.count; ++k) screen[k] = project(poly.v[k].clip, view.width, view.height);
-      for (int k = 1; k + 1 < poly.count; ++k) {  // fan over the clipped polygon
-        const ScreenVertex corners[3] = {screen[0], screen[k], screen[k + 1]};
+      // A fan over the clipped polygon, each vertex projected once as the fan reaches it.
+      ScreenVertex corners[3] = {project(poly.v[0].clip, view.width, view.height), {},
+                                 project(poly.v[1].clip, view.width, view.height)};
+      for (int k = 1; k + 1 < poly.count; ++k) {
+        corners[1] = corners[2];
+        corners[2] = project(poly.v[k + 1].clip, view.width, view.height);
         const ClipVertex<P>* const clip_corners[3] = {&poly.v[0], &poly.v[k], &poly.v[k + 1]};
         draw_general(corners, clip_corners);
       }

@@ -300,10 +300,12 @@ struct GroupSpan {
 // Lod compiles the mip level's computation (a build with trilinear textures).
 // `run` comes zeroed from the caller, once a triangle: the groups a shape does not
 // step keep zero values and steps, and what it steps is set before every run.
+// Out of line, one call a span: inlined into the triangle's shape dispatch, the
+// shapes' group states (three projectors' are 600 bytes) piled up in one frame.
 template <int P, bool UV, bool Projectors, bool Lod = false, typename Divide, typename RunFn>
-inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
-                      const SpanControl& control, const Divide& divide, std::int32_t c0, std::int32_t c1,
-                      PixelRun<P>& run, RunFn&& run_pixels) {
+[[gnu::noinline]] inline void walk_span(const TriangleSetup& t, const TriangleAttributes<P>& a, const SpanNeeds& needs,
+                                        const SpanControl& control, const Divide& divide, std::int32_t c0,
+                                        std::int32_t c1, PixelRun<P>& run, RunFn&& run_pixels) {
   constexpr int PS = Projectors ? P : 0;
   const GroupSource<P, Divide> src{t, a, divide};
   const ScreenWeights s0 = screen_weights(t, t.edge[1].value_at(c0), t.edge[2].value_at(c0));

@@ -96,9 +96,10 @@ constexpr void lerp_vertex(const ClipVertex<P>& a, const ClipVertex<P>& b, std::
 
 // Cuts the polygon by one plane, in place: edge i (vertex i to i + 1) gives
 // vertex i when it is inside and the crossing when the edge crosses, in that
-// order, as the two-buffer Sutherland-Hodgman does, with two vertices of
-// scratch instead of a second polygon (9 vertices of 40 + 32 P bytes: a frame's
-// stack peak runs through here). Writes run ahead of reads by at most the
+// order, as the two-buffer Sutherland-Hodgman does, with three vertices of
+// scratch (the first vertex, and two slots taking turns for each edge's far end)
+// instead of a second polygon (9 vertices of 40 + 32 P bytes: a frame's stack
+// peak runs through here). Writes run ahead of reads by at most the
 // number of exits (inside to outside) so far, so the input first moves up by
 // exits - 1 slots: one exact convex polygon leaves a plane once and needs no
 // move; a polygon that rounding has bent may leave it more often. False when
@@ -125,8 +126,8 @@ constexpr bool clip_against(ClipPolygon<P>& poly, ClipPlane plane, std::int64_t 
   const int shift = exits > 1 ? exits - 1 : 0;
   if (count < 3 || count > max_clipped_vertices || n + shift > max_clipped_vertices) return false;
   for (int i = n - 1; shift > 0 && i >= 0; --i) poly.v[i + shift] = poly.v[i];
-  // Vertex k of the input is at poly.v[shift + k] until a write reaches it: the write for edge i
-  // lands at or below i + exits <= shift + i + 1, whose vertex is already read (into `next`).
+  // Vertex k of the input is at poly.v[shift + k] until a write reaches it: the writes for edge i
+  // land at or below i + exits <= shift + i + 1, whose vertex is already read (into `*b`).
   const ClipVertex<P> first = poly.v[shift];
   ClipVertex<P> scratch[2];
   const ClipVertex<P>* a = &first;

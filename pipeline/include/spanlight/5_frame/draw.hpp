@@ -89,21 +89,32 @@ inline constexpr std::uint32_t small_depth_margin = 256;
 
 // Draws a small triangle (2_triangle/small.hpp): rows by its 32-bit edges, and
 // each span as one run with affine depth and quadratic uv. Its edges step down
-// the rows in place. `run` is the object's: zeroed once, and per triangle only
-// depth and (when the pass needs them) uv are set, all the small path's kernels
-// read (it serves no pass that reads a projector).
+// the rows in place. The run lives here, out of line from draw_pass, so it is
+// not on the stack under the general path's walk (a frame's peak).
 template <int P, typename Kernel, typename Hooks>
 inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::uint32_t (&index)[3],
                        const ScreenVertex (&v)[3], const PerspectiveWeights& weights, std::int32_t range,
-                       const SpanNeeds& needs, const PassView& view, PixelRun<P>& run, Kernel& kernel, Hooks& hooks) {
+                       const SpanNeeds& needs, const PassView& view, Kernel& kernel, Hooks& hooks) {
   const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
   const AffineAttribute z = t.affine(v[i0].z, v[i1].z - v[i0].z, v[i2].z - v[i0].z, 2);  // Q1.30 -> Q0.32
   // The rows of the band the triangle covers.
   const std::int32_t first = std::max(t.row_begin, view.row_begin);
   const std::int32_t last = std::min(t.row_end, view.row_end);
+  // Each field a kernel of this kind may read is set before it reads it; the run is not zeroed as
+  // a whole (a memset call at -Os: on M0+ 0.3 % more of mesh_bear). Depth and uv are set per row.
+  PixelRun<P> run;
+  if constexpr (Kernel::may_need_uv) {
+    run.level.level = run.level.base = run.level.step = 0;  // zero, as RunLevel says: a small
+    run.level.one_level = false;                            // triangle is never mipmapped
+  }
+  if constexpr (Kernel::may_need_projectors) {  // the passes the small path serves light no pixel
+    run.s = run.t = run.r = {};
+    run.front = {};
+  }
   QuadraticRows uv[2];
   if (!needs.uv) {
     uv[0] = uv[1] = QuadraticRows{};  // never read; set so that no path leaves them undefined
+    run.u = run.v = Stepped{};
   } else {
     const std::int32_t e0 = weights.e[i0] >> 1, e1 = weights.e[i1] >> 1, e2 = weights.e[i2] >> 1;  // Q0.29
     const AffineAttribute e = t.affine(e0, e1 - e0, e2 - e0, 0);
@@ -179,7 +190,6 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     const bool small_allowed = small_path_allowed(scene, object, view);
     // The small path's uv step scale, from the texture alone (the same in every pass, as the path's choice).
     const int small_texel_bits = object.texture < 0 ? 32 : surface_of(object, scene.textures).scale.texel_bits;
-    PixelRun<P> small_run{};  // draw_small's, zeroed once an object
     cache_vertices(object, to_clip, view.width, view.height, guard, cache);
 
     // Stages 2 and 3 for one triangle whose window vertices are known (cached, or cut by the clip stage).
@@ -260,7 +270,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
                          (range < (1 << 26) && perspective_weights_of(corners, weights) &&
                           quadratic_enough(weights, range, object.uv_frac_bits, small_texel_bits, knobs.tolerance_log2));
       if (!depth_ok || !uv_ok) return false;
-      draw_small<P>(t, object, index, corners, weights, range, needs, view, small_run, kernel, hooks);
+      draw_small<P>(t, object, index, corners, weights, range, needs, view, kernel, hooks);
       return true;
     };
 

@@ -151,7 +151,9 @@ struct GroupSpan {
   constexpr void start(const GroupSource<P, Divide>& src, int group, const SpanControl& c, const Weights& w0,
                        const Weights& w1, std::int32_t c0, std::int32_t c1) {
     scale = group == uv_group ? *c.uv : StepScale{{0, 0, 0}, {0, 0, 0}, c.projector_texel_bits[group]};
-    GroupPoint first;
+    // The first point is held in `end` (plan sets it before it is read): no point of this frame's
+    // own, so GCC makes plan a tail call and this frame is gone under plan's.
+    GroupPoint& first = end;
     point_from(src, group, w0, first);
     if (c0 == c1) {
       take_constant(first, c1);
@@ -189,11 +191,10 @@ struct GroupSpan {
   // per-pixel mode, evaluate this pixel exactly.
   template <int P, typename Divide>
   [[gnu::noinline]] constexpr void arrive(const GroupSource<P, Divide>& src, int group, std::int32_t column, std::int32_t c1) {
-    if (mode == GroupMode::per_pixel) {
-      GroupPoint p;
-      if (column == c1) p = last;
-      else src.exact_at(group, column, p);
-      take(p);
+    if (mode == GroupMode::per_pixel) {  // `end` is free in this mode: it holds the pixel's point
+      if (column == c1) end = last;
+      else src.exact_at(group, column, end);
+      take(end);
       segment_end = column + 1;
       return;
     }

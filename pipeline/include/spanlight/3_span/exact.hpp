@@ -88,8 +88,8 @@ constexpr Weights perspective_weights(const TriangleSetup& t, const ScreenWeight
 // (1/w, or q/w up to a constant) that the subdivision watches.
 struct GroupPoint {
   std::int32_t value[3];
+  bool front;                // q > 0 (always true for uv); here, so that the point packs in 24 bytes, not 32
   std::int64_t denominator;
-  bool front;  // q > 0 (always true for uv)
 };
 
 inline constexpr int uv_group = -1;  // the group index of the surface's uv; projectors are 0..P-1

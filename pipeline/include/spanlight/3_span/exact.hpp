@@ -132,10 +132,11 @@ constexpr void projector_point(const TriangleAttributes<P>& a, int j, const Weig
 // reciprocal adds the divide's relative error e and the product a truncation of
 // 2^-30, so |gamma error| <= gamma (e + 2^-30) + 2^-30 and the value is off by
 // at most |f_b - f_a| (e + 2^-29) + 1 unit from the exact ratio of the ends.
+template <int Components>  // 2 for uv, 3 for a projector's s, t, r
 struct RowInterpolation {
   std::int32_t a, length;    // first column and b - a > 0
   std::uint32_t e_a, e_b;    // the divisors at a and b, scaled together below 2^31
-  std::int32_t f_a[3], df[3];  // |f| < 2^30 at both ends, so |df| < 2^31
+  std::int32_t f_a[Components], df[Components];  // |f| < 2^30 at both ends, so |df| < 2^31
 
   constexpr void init(std::int32_t column_a, std::int32_t column_b, const GroupPoint& pa, const GroupPoint& pb) {
     a = column_a;
@@ -144,7 +145,7 @@ struct RowInterpolation {
     const int shift = std::max(fixedpoint::bit_length(std::max(da, db)) - 31, 0);
     e_a = static_cast<std::uint32_t>(da >> shift);
     e_b = static_cast<std::uint32_t>(db >> shift);
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < Components; ++k) {
       f_a[k] = pa.value[k];
       df[k] = pb.value[k] - pa.value[k];
     }
@@ -152,8 +153,8 @@ struct RowInterpolation {
 
   // The point at column x in [a, b]; its denominator is (b - x) E_a + (x - a) E_b,
   // the divisor up to the row's constant (segment lengths compare ratios only). Fills the first
-  // Components values (2 for uv, 3 for a projector's s, t, r).
-  template <int Components, typename Divide>
+  // Components values.
+  template <typename Divide>
   constexpr void at(std::int32_t x, const Divide& divide, GroupPoint& out) const {
     const auto before = static_cast<std::uint32_t>(x - a), after = static_cast<std::uint32_t>(length) - before;
     const std::uint64_t num = fixedpoint::mul_u32_u16(e_b, before);  // < 2^12 * 2^31 (spans < 2^13 px)

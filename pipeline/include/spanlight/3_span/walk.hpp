@@ -136,16 +136,16 @@ enum class GroupMode : std::uint8_t { interpolated, constant, per_pixel };
 template <int Components>
 struct GroupSpan {
   static constexpr int components = Components;
-  Stepped value[3];
+  Stepped value[Components];
   bool front;
   GroupMode mode;
   std::int32_t segment_end;  // the column of the next exact point (c1 + 1: none before the span ends)
   StepScale scale;
   SegmentPlanner planner;    // each segment's length
-  std::int32_t exact_start[3];  // the exact values at the current segment's start
+  std::int32_t exact_start[Components];  // the exact values at the current segment's start
   GroupPoint end;            // the exact point at segment_end
   GroupPoint last;           // the exact point at the span's end c1
-  RowInterpolation row;
+  RowInterpolation<Components> row;
 
   template <int P, typename Divide>
   constexpr void start(const GroupSource<P, Divide>& src, int group, const SpanControl& c, const Weights& w0,
@@ -255,10 +255,10 @@ struct GroupSpan {
     while ((std::int32_t{1} << k) > left) --k;
     segment_end = column + (std::int32_t{1} << k);
     if (segment_end == c1) end = last;
-    else row.template at<components>(segment_end, divide, end);
+    else row.at(segment_end, divide, end);
     if (k == 0) return;  // one pixel: nothing steps
     GroupPoint middle;
-    row.template at<components>(column + (std::int32_t{1} << (k - 1)), divide, middle);
+    row.at(column + (std::int32_t{1} << (k - 1)), divide, middle);
     set_steps(exact_start, middle, end, k);
   }
 
@@ -272,8 +272,8 @@ struct GroupSpan {
     const std::int32_t start = c1 - (std::int32_t{1} << k);
     if (start == column || start < planner.a || planner.length_log2_at(start) < k) return false;
     GroupPoint first, middle;
-    row.template at<components>(start, divide, first);
-    row.template at<components>(start + (std::int32_t{1} << (k - 1)), divide, middle);
+    row.at(start, divide, first);
+    row.at(start + (std::int32_t{1} << (k - 1)), divide, middle);
     end = last;
     segment_end = c1;
     set_steps(first.value, middle, last, k);
@@ -286,7 +286,7 @@ struct GroupSpan {
   }
 
   // The steps of the quadratic through the exact values at a segment's start, middle and end (k >= 1).
-  constexpr void set_steps(const std::int32_t (&start)[3], const GroupPoint& middle, const GroupPoint& stop, int k) {
+  constexpr void set_steps(const std::int32_t* start, const GroupPoint& middle, const GroupPoint& stop, int k) {
     for (int c = 0; c < components; ++c) {
       const QuadraticSteps q = quadratic_steps(middle.value[c] - start[c], stop.value[c] - middle.value[c], k, scale.shift[c]);
       value[c].step = q.step;

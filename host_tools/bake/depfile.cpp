@@ -32,9 +32,16 @@ bool same_file(const fs::path& a, const fs::path& b) {
 
 std::string depfile_text(const std::vector<fs::path>& targets, const std::vector<fs::path>& inputs) {
   std::string text;
-  for (const fs::path& target : targets) text += (text.empty() ? "" : " ") + escaped(target);
+  // Appended piece by piece: "literal" + string&& trips GCC 12's false -Wrestrict (PR 105651).
+  for (const fs::path& target : targets) {
+    if (!text.empty()) text += ' ';
+    text += escaped(target);
+  }
   text += ":";
-  for (const fs::path& input : inputs) text += " \\\n  " + escaped(input);
+  for (const fs::path& input : inputs) {
+    text += " \\\n  ";
+    text += escaped(input);
+  }
   return text + "\n";
 }
 

@@ -85,10 +85,17 @@ std::string shell_quoted(const std::string& text) {
 MeasureRun measure_elf(const MeasureSetup& setup, const std::string& cpu, const fs::path& elf,
                        const std::vector<std::string>& args, const fs::path& work_dir) {
   MeasureRun run;
-  std::string command = "cd " + shell_quoted(work_dir.string()) + " && bash " + shell_quoted(setup.script.string()) +
-                        " --cpu " + shell_quoted(cpu) + " --plugin " + shell_quoted(setup.plugin.string()) + " " +
-                        shell_quoted(elf.string());
-  for (const std::string& a : args) command += " " + shell_quoted(a);
+  // Word by word: "literal" + string&& trips GCC 12's false -Wrestrict (PR 105651).
+  std::string command = "cd";
+  auto word = [&](const std::string& w) {
+    command += ' ';
+    command += w;
+  };
+  for (const std::string& w : {shell_quoted(work_dir.string()), std::string("&& bash"), shell_quoted(setup.script.string()),
+                               std::string("--cpu"), shell_quoted(cpu), std::string("--plugin"),
+                               shell_quoted(setup.plugin.string()), shell_quoted(elf.string())})
+    word(w);
+  for (const std::string& a : args) word(shell_quoted(a));
   command += " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return run;

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 
 #include "spanlight/2_triangle/attributes.hpp"
@@ -136,7 +137,7 @@ template <int Components>  // 2 for uv, 3 for a projector's s, t, r
 struct RowInterpolation {
   std::int32_t a, length;    // first column and b - a > 0
   std::uint32_t e_a, e_b;    // the divisors at a and b, scaled together below 2^31
-  std::int32_t f_a[Components], df[Components];  // |f| < 2^30 at both ends, so |df| < 2^31
+  std::int32_t f_a[static_cast<std::size_t>(Components)], df[static_cast<std::size_t>(Components)];  // |f| < 2^30 at both ends, so |df| < 2^31
 
   constexpr void init(std::int32_t column_a, std::int32_t column_b, const GroupPoint& pa, const GroupPoint& pb) {
     a = column_a;

@@ -25,6 +25,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
@@ -136,13 +137,13 @@ enum class GroupMode : std::uint8_t { interpolated, constant, per_pixel };
 template <int Components>
 struct GroupSpan {
   static constexpr int components = Components;
-  Stepped value[Components];
+  Stepped value[static_cast<std::size_t>(Components)];
   bool front;
   GroupMode mode;
   std::int32_t segment_end;  // the column of the next exact point (c1 + 1: none before the span ends)
   StepScale scale;
   SegmentPlanner planner;    // each segment's length
-  std::int32_t exact_start[Components];  // the exact values at the current segment's start
+  std::int32_t exact_start[static_cast<std::size_t>(Components)];  // the exact values at the current segment's start
   GroupPoint end;            // the exact point at segment_end
   GroupPoint last;           // the exact point at the span's end c1
   RowInterpolation<Components> row;

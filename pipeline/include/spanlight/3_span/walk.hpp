@@ -152,8 +152,8 @@ struct GroupSpan {
   constexpr void start(const GroupSource<P, Divide>& src, int group, const SpanControl& c, const Weights& w0,
                        const Weights& w1, std::int32_t c0, std::int32_t c1) {
     scale = group == uv_group ? *c.uv : StepScale{{0, 0, 0}, {0, 0, 0}, c.projector_texel_bits[group]};
-    // The first point is held in `end` (plan sets it before it is read): no point of this frame's
-    // own, so GCC makes plan a tail call and this frame is gone under plan's.
+    // The first point is held in `end` (plan sets it before it is read), not in a point of this
+    // frame's own: this frame sits under plan's at a frame's peak stack.
     GroupPoint& first = end;
     point_from(src, group, w0, first);
     if (c0 == c1) {

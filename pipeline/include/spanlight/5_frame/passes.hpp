@@ -341,7 +341,7 @@ struct FusedKernel {
         Color::store(c + k * Color::per_pixel, modulate(light, sample(u, v, k)));
       }
       // A projector off for the whole run is never read again: not stepped either (three_projectors
-      // -1.9 % on M7). lit() runs only when one is on, so a lone projector needs no test.
+      // -1.5 % on M7). lit() runs only when one is on, so a lone projector needs no test.
       for_each_projector<P>(0, projector_count, [&](int j) SPANLIGHT_LAMBDA_INLINE_ATTR {
         if (P == 1 || on[j]) p[j].next();
       });

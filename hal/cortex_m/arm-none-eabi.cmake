@@ -37,8 +37,10 @@ endif()
 set(SPANLIGHT_FIRMWARE_OPT "${spanlight_default_opt}" CACHE STRING "Optimisation flag for Release firmware")
 
 # -ffunction-sections/-fdata-sections let --gc-sections drop what no app uses;
-# -fstack-usage writes a .su file per object (worst-case frame of each function).
-set(spanlight_common "-mthumb ${spanlight_cpu_flags} -ffunction-sections -fdata-sections -fstack-usage")
+# -fstack-usage writes a .su file per object (worst-case frame of each function), and
+# -fcallgraph-info=su a .ci file with those frames on the call graph (scripts/stack-path.sh).
+# Neither changes the code.
+set(spanlight_common "-mthumb ${spanlight_cpu_flags} -ffunction-sections -fdata-sections -fstack-usage -fcallgraph-info=su")
 set(CMAKE_C_FLAGS_INIT "${spanlight_common}")
 # No exceptions/RTTI: no unwinder, no typeinfo. No thread-safe statics: there is one thread
 # and the guards would pull in __cxa_guard_*.

@@ -146,8 +146,9 @@ TEST_CASE("QuadraticRows walks a small triangle's quadratic exactly, modulo 2^32
     rows.start(q, r0);
     for (std::uint32_t r = r0; r < 64; ++r) {
       for (const std::uint32_t c0 : {0u, 1u, 17u, 63u}) {
-        std::uint32_t v, step, curve;
-        rows.at(c0, v, step, curve);
+        std::uint32_t v, step;
+        rows.at(c0, v, step);
+        const std::uint32_t curve = rows.curve();
         for (std::uint32_t c = c0; c < 64; ++c) {
           const std::uint32_t exact = q.q00 + q.q10 * c + q.q01 * r + q.q20 * c * c + q.q11 * c * r + q.q02 * r * r;
           wrong += v != exact;
@@ -309,8 +310,8 @@ QuadraticErrors quadratic_errors(int tolerance_log2) {
           }
           ++r.pixels;
           for (int q = 0; q < 2; ++q) {
-            std::uint32_t value, step, curve;
-            rows[q].at(static_cast<std::uint32_t>(c), value, step, curve);
+            std::uint32_t value, step;
+            rows[q].at(static_cast<std::uint32_t>(c), value, step);
             // The difference modulo the texture's wrap (2^32 step units), in texels.
             const double exact_units = std::fmod(num[q] / den * std::ldexp(1.0, shift), 0x1p32);
             const double diff = std::ldexp(std::remainder(double(value) - exact_units, 0x1p32), -texel_bits);

@@ -381,12 +381,13 @@ struct QuadraticRows {
     down += q02x2;
     slope += q11;
   }
-  // The value, step and curve at column c of this row.
-  constexpr void at(std::uint32_t c, std::uint32_t& v, std::uint32_t& step, std::uint32_t& curve) const {
-    v = value + (slope + q20 * c) * c;
-    step = slope + q20 * (2 * c + 1);
-    curve = 2 * q20;
+  // The value and step at column c of this row (the curve, 2 q20, is the same at every pixel).
+  constexpr void at(std::uint32_t c, std::uint32_t& v, std::uint32_t& step) const {
+    const std::uint32_t slope_at_c = slope + q20 * c;
+    v = value + slope_at_c * c;
+    step = slope_at_c + q20 * (c + 1);
   }
+  constexpr std::uint32_t curve() const { return 2 * q20; }
 };
 
 }  // namespace spanlight

@@ -127,6 +127,8 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
                                         weights.e[i2], e),
                   r0);
     }
+    run.u.curve = uv[0].curve();
+    run.v.curve = uv[1].curve();
   }
   hooks.triangle_rows();
   for (std::int32_t row = t.row_begin; row < first; ++row) t.next_row();  // fewer than 64 rows
@@ -138,8 +140,8 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
       const auto c = static_cast<std::uint32_t>(lo);
       run.z = z_row + z.per_column * c;
       if (needs.uv) {
-        uv[0].at(c, run.u.value, run.u.step, run.u.curve);
-        uv[1].at(c, run.v.value, run.v.step, run.v.curve);
+        uv[0].at(c, run.u.value, run.u.step);
+        uv[1].at(c, run.v.value, run.v.step);
       }
       kernel.run(static_cast<std::uint32_t>((row - view.row_begin) * view.width + t.column0 + lo), hi - lo + 1, run);
     }

@@ -173,6 +173,14 @@ TEST_CASE("64-bit shifts by less than 32 from 32-bit operations equal the native
   STATIC_REQUIRE(fixedpoint::high_word_shifted_left(1, 63) == 0x80000000u);
 }
 
+TEST_CASE("power_of_two64 is 2^s at every s from 0 to 63", "[bits][shift]") {
+  for (int s = 0; s < 64; ++s) {
+    INFO("s = " << s);
+    REQUIRE(fixedpoint::power_of_two64(s) == std::uint64_t{1} << s);
+  }
+  STATIC_REQUIRE(fixedpoint::power_of_two64(32) == 0x100000000ull);
+}
+
 TEST_CASE("normalised_pair gives the top word of x and y shifted by clz64(x)", "[bits][shift]") {
   std::mt19937_64 random(20261206);
   const auto expected = [](std::uint64_t x, std::uint64_t y) {

@@ -278,6 +278,11 @@ constexpr std::int64_t mul_shift_wide(std::int64_t a, std::int32_t b, int s) {
   return s < 32 ? static_cast<std::int32_t>(low_word_shifted_right(u, s))
                 : static_cast<std::int32_t>(static_cast<std::uint32_t>(u >> 32)) >> (s - 32);  // arithmetic: floor
 }
+// 2^s for 0 <= s < 64, built from words: a 64-bit shift by a run-time amount is an
+// __aeabi_llsl call on ARMv6-M.
+[[gnu::always_inline]] constexpr std::uint64_t power_of_two64(int s) {
+  return s < 32 ? std::uint64_t{1u << s} : std::uint64_t{1u << (s - 32)} << 32;
+}
 // Number of bits needed to hold x (0 for 0), for 32-bit values: one 32-bit count (on ARMv6-M
 // __clzsi2 alone, where bit_length's 64-bit count goes through __clzdi2).
 constexpr int bit_length32(std::uint32_t x) { return x == 0 ? 0 : 32 - clz32(x); }

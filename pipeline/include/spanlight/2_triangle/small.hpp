@@ -181,7 +181,7 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   const int area_log2 = fixedpoint::bit_length32(static_cast<std::uint32_t>(area2));
   const std::uint32_t rcp = fixedpoint::reciprocal_normalised<8, 2>(static_cast<std::uint32_t>(area2) << (32 - area_log2));
   const int shift = 4 + area_log2;  // <= 33
-  const std::int64_t half = std::int64_t{1} << (shift - 1);
+  const auto half = static_cast<std::int64_t>(fixedpoint::power_of_two64(shift - 1));
   auto plane = [&](const SmallEdge& e) {
     // Rounded: within 2^-27 of x rcp / 2^shift (|x rcp| < 2^61: no overflow). rcp < 2^31 fits int32.
     auto scaled = [&](std::int32_t x) {
@@ -298,7 +298,7 @@ constexpr bool quadratic_enough(const PerspectiveWeights& w, std::int32_t uv_ran
   const int budget_log2 = 30 + frac - tolerance_log2, rounding_log2 = 30 + frac + 14 - texel_bits;
   if (rounding_log2 >= budget_log2) return false;
   if (budget_log2 >= 63) return true;
-  return error <= (std::uint64_t{1} << budget_log2) - (std::uint64_t{1} << rounding_log2);
+  return error <= fixedpoint::power_of_two64(budget_log2) - fixedpoint::power_of_two64(rounding_log2);
 }
 
 // One coordinate (u or v) over a small triangle as a polynomial in the column

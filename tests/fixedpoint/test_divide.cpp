@@ -2,6 +2,7 @@
 // over their whole contract: d in [1, 2^32), n / d < 2^32.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <random>
 
@@ -94,4 +95,28 @@ TEST_CASE("floor_div_wide is the exact floor and remainder for every 64-bit nume
   }
   // Usable where the edge setup needs it, at compile time.
   static_assert(fixedpoint::floor_div_wide(-7, 2).quotient == -4 && fixedpoint::floor_div_wide(-7, 2).remainder == 1);
+}
+
+// The path a core without a divide instruction takes (Cortex-M0+), run here on the host: from the
+// divisor's reciprocal, the exact quotient in fewer than the 6 steps divide.hpp states.
+TEST_CASE("FloorDivisor without a divide instruction gives the exact quotient in a few steps", "[divide]") {
+  std::mt19937_64 rng(20261207);
+  int worst = 0;
+  auto check = [&](std::uint32_t n, std::uint32_t d) {
+    const fixedpoint::Reciprocal y = fixedpoint::reciprocal<8, 2>(d);
+    const std::uint32_t q = fixedpoint::FloorDivisor::quotient_by_reciprocal(n, d, y);
+    const auto q0 = fixedpoint::word_shifted_right(fixedpoint::mul_u32(n, y.mantissa), y.shift);
+    INFO("n " << n << ", d " << d);
+    REQUIRE(q == n / d);
+    REQUIRE(q0 <= q);  // the reciprocal is from below: the steps only go up
+    worst = std::max(worst, static_cast<int>(q - q0));
+  };
+  for (int i = 0; i < random_cases; ++i) {
+    const auto d = static_cast<std::uint32_t>(rng() >> (33 + rng() % 32)) | 1u;  // every bit length below 2^31
+    check(static_cast<std::uint32_t>(rng() >> (32 + rng() % 32)), d);              // every bit length of n
+  }
+  for (const std::uint32_t d : {1u, 3u, 255u, 256u, 65535u, 0x7FFFFFFFu})
+    for (const std::uint32_t n : {0u, d - 1, d, 0xFFFFFFFFu - 1, 0xFFFFFFFFu}) check(n, d);
+  INFO("most correction steps: " << worst);
+  REQUIRE(worst < 6);
 }

@@ -375,3 +375,41 @@ TEST_CASE("setup and row walk cover exactly the pixels float_model::pixel_covere
   CHECK(well_formed);
   CHECK(mismatched == 0);
 }
+
+// A small triangle's edges step down the rows in one of two ways (2_triangle/small.hpp: with
+// the core's divide, or by search where it has none, Cortex-M0+); the host draws with the first,
+// so here the second is held to it: the same quotient and remainder on every row of the box,
+// for edges of every slope, from every row.
+TEST_CASE("a small triangle's edge gives the same bounds stepped by division and by search", "[coverage][small]") {
+  const int cases = pt::sanitized ? 20000 : 200000;
+  std::mt19937_64 rng(0x5eed0007);
+  constexpr std::int32_t box = spanlight::small_triangle_extent + 256;  // vertices relative to the corner
+  auto coordinate = [&](std::int32_t range) {
+    // Every scale of edge: from a subpixel to the whole box.
+    const int bits = static_cast<int>(rng() % 15) + 1;
+    return static_cast<std::int32_t>(rng() % static_cast<std::uint64_t>(std::min(range, std::int32_t{1} << bits)));
+  };
+  long rows = 0;
+  for (int i = 0; i < cases; ++i) {
+    const std::int32_t ax = coordinate(box), ay = coordinate(box), bx = coordinate(box), by = coordinate(box);
+    if (ay == by) continue;  // horizontal: a small triangle bounds no row with it
+    spanlight::SmallEdge e;
+    e.start(ax, ay, bx, by);
+    // The rows the edge spans (centres 256 r + 128 within its ends); any row of the box is exact too.
+    const std::int32_t top = std::min(ay, by), bottom = std::max(ay, by);
+    const std::int32_t first = std::max(0, (top - 128 + 255) >> 8), last = ((bottom - 128) >> 8) + 1;
+    if (first >= last) continue;
+    const std::int32_t start = first + static_cast<std::int32_t>(rng() % static_cast<std::uint64_t>(last - first));
+    auto divided = e.bound<false>(start);
+    auto searched = e.bound<true>(start);
+    for (std::int32_t row = start; row < last; ++row, ++rows) {
+      INFO("edge (" << ax << ", " << ay << ") - (" << bx << ", " << by << "), row " << row);
+      REQUIRE(searched.quotient == divided.quotient);
+      REQUIRE(searched.remainder == divided.remainder);
+      divided.next_row();
+      searched.next_row();
+    }
+  }
+  INFO(rows << " rows");
+  CHECK(rows > cases);
+}

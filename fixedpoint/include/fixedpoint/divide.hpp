@@ -98,17 +98,20 @@ struct FloorDivisor {
 
   // |n| / d, exactly: q0 = floor(|n| y) <= |n| / d and |n| / d - q0 < 2^31 * 2^-28.9 + 1 < 6.
   [[gnu::always_inline]] constexpr std::uint32_t unsigned_quotient(std::uint32_t n) const {
-    if constexpr (has_divide_instruction) {
-      return n / d;
-    } else {
-      auto q = word_shifted_right(mul_u32(n, y.mantissa), y.shift);  // y.shift in [31, 62] for d < 2^31
-      std::uint32_t r = n - q * d;
-      while (r >= d) {
-        r -= d;
-        ++q;
-      }
-      return q;
+    if constexpr (has_divide_instruction) return n / d;
+    else return quotient_by_reciprocal(n, d, y);
+  }
+
+  // The same from the reciprocal y of d (the path without a divide instruction; a function of
+  // its own so that the host's tests run it too).
+  [[gnu::always_inline]] static constexpr std::uint32_t quotient_by_reciprocal(std::uint32_t n, std::uint32_t d, Reciprocal y) {
+    auto q = word_shifted_right(mul_u32(n, y.mantissa), y.shift);  // y.shift in [31, 62] for d < 2^31
+    std::uint32_t r = n - q * d;
+    while (r >= d) {
+      r -= d;
+      ++q;
     }
+    return q;
   }
 
   struct Result {

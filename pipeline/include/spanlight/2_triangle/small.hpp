@@ -59,14 +59,17 @@ struct EdgeBoundBy {
   // (|row_step| = |dx| 256, divisor = |dy| 256), and an edge's quotient stays within the box on the
   // rows it spans: at most 65 steps over all of them.
   [[gnu::always_inline]] constexpr void settle() {
-    while (remainder < 0) {
-      remainder += divisor;
-      --quotient;
+    std::int32_t q = quotient, r = remainder;  // in registers: the fields would be stored at every step
+    while (r < 0) {
+      r += divisor;
+      --q;
     }
-    while (remainder >= divisor) {
-      remainder -= divisor;
-      ++quotient;
+    while (r >= divisor) {
+      r -= divisor;
+      ++q;
     }
+    quotient = q;
+    remainder = r;
   }
 };
 using EdgeBound = EdgeBoundBy<!fixedpoint::has_divide_instruction>;

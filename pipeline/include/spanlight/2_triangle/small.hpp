@@ -308,10 +308,11 @@ constexpr bool perspective_weights_of(const ScreenVertex (&v)[3], PerspectiveWei
   for (int i = 0; i < 3; ++i) {
     // 3 w_i / sum - 1 in Q0.30: 3 w_i < 2^32, times the mantissa (< 2^31) over 2^(shift - 30).
     // The ratio is at most 3 * 2^30 (3 w_i / sum <= 3, y <= 1 / sum): one word.
-    const std::int64_t ratio = fixedpoint::word_shifted_right(fixedpoint::mul_u32(3u * w[i], rcp.mantissa), rcp.shift - 30);
-    const std::int64_t e = ratio - (std::int64_t{1} << 30);
-    if (e > (1 << 25) || e < -(1 << 25)) return false;  // |e_i| <= 1/32: |sum l_i e_i| < 2^30.2 with |l_i| <= 12
-    out.e[i] = static_cast<std::int32_t>(e);
+    const std::uint32_t ratio = fixedpoint::word_shifted_right(fixedpoint::mul_u32(3u * w[i], rcp.mantissa), rcp.shift - 30);
+    // |e_i| <= 1/32 (|sum l_i e_i| < 2^30.2 with |l_i| <= 12): ratio within 2^25 of 2^30, one
+    // unsigned compare of the word (below the range it wraps above it).
+    if (ratio - ((1u << 30) - (1u << 25)) > (1u << 26)) return false;
+    out.e[i] = static_cast<std::int32_t>(ratio - (1u << 30));  // in [-2^25, 2^25]
     const std::int32_t m = out.e[i] < 0 ? -out.e[i] : out.e[i];
     out.largest = m > out.largest ? m : out.largest;
   }

@@ -278,6 +278,15 @@ constexpr std::int64_t mul_shift_wide(std::int64_t a, std::int32_t b, int s) {
   return s < 32 ? static_cast<std::int32_t>(low_word_shifted_right(u, s))
                 : static_cast<std::int32_t>(static_cast<std::uint32_t>(u >> 32)) >> (s - 32);  // arithmetic: floor
 }
+// The least and the greatest of three, as nested compares: std::min({a, b, c}) builds its
+// initializer list on the stack at -Os (Cortex-M0+: 15 instructions where these take 6).
+[[gnu::always_inline]] constexpr std::int32_t least_of(std::int32_t a, std::int32_t b, std::int32_t c) {
+  return a < b ? (a < c ? a : c) : (b < c ? b : c);
+}
+[[gnu::always_inline]] constexpr std::int32_t greatest_of(std::int32_t a, std::int32_t b, std::int32_t c) {
+  return a > b ? (a > c ? a : c) : (b > c ? b : c);
+}
+
 // 2^s for 0 <= s < 64, built from words: a 64-bit shift by a run-time amount is an
 // __aeabi_llsl call on ARMv6-M.
 [[gnu::always_inline]] constexpr std::uint64_t power_of_two64(int s) {

@@ -127,8 +127,7 @@ constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int height
   const ScreenVertex& v1 = in[t.order[1]];
   const ScreenVertex& v2 = in[t.order[2]];
 
-  const std::int32_t y_min = v0.y < v1.y ? (v0.y < v2.y ? v0.y : v2.y) : (v1.y < v2.y ? v1.y : v2.y);
-  const std::int32_t y_max = v0.y > v1.y ? (v0.y > v2.y ? v0.y : v2.y) : (v1.y > v2.y ? v1.y : v2.y);
+  const std::int32_t y_min = fixedpoint::least_of(v0.y, v1.y, v2.y), y_max = fixedpoint::greatest_of(v0.y, v1.y, v2.y);
   // Rows whose centres 256 r + 128 lie in [y_min, y_max]; |y| < 2^21 (the guard band), so an
   // arithmetic shift is the floor division.
   std::int32_t r0 = (y_min - 128 + 255) >> 8;  // first centre >= y_min

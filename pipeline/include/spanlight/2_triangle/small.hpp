@@ -16,7 +16,6 @@
 //   general path: here every attribute relative to vertex 0 fits 32 bits.
 #pragma once
 
-#include <algorithm>
 #include <climits>
 #include <cstdint>
 #include <utility>
@@ -168,8 +167,8 @@ struct SmallTriangle {
 // when it is culled, has no area or no row (then it draws nothing either way).
 constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, SmallTriangle& t, bool& covers) {
   covers = false;
-  const std::int32_t x_min = std::min({in[0].x, in[1].x, in[2].x}), x_max = std::max({in[0].x, in[1].x, in[2].x});
-  const std::int32_t y_min = std::min({in[0].y, in[1].y, in[2].y}), y_max = std::max({in[0].y, in[1].y, in[2].y});
+  const std::int32_t x_min = fixedpoint::least_of(in[0].x, in[1].x, in[2].x), x_max = fixedpoint::greatest_of(in[0].x, in[1].x, in[2].x);
+  const std::int32_t y_min = fixedpoint::least_of(in[0].y, in[1].y, in[2].y), y_max = fixedpoint::greatest_of(in[0].y, in[1].y, in[2].y);
   if (x_max - x_min >= small_triangle_extent || y_max - y_min >= small_triangle_extent) return false;
   // The corner: the pixel centre at or left of / above the box (|x| < 2^21: >> is floor).
   t.column0 = (x_min - 128) >> 8;

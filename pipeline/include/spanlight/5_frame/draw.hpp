@@ -38,8 +38,7 @@ struct PassView {
 // triangle skipped here is one whose setup gives no row in [row_begin, row_end).
 constexpr bool may_cover_rows(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
                               const PassView& view) {
-  const std::int32_t y_min = a.y < b.y ? (a.y < c.y ? a.y : c.y) : (b.y < c.y ? b.y : c.y);
-  const std::int32_t y_max = a.y > b.y ? (a.y > c.y ? a.y : c.y) : (b.y > c.y ? b.y : c.y);
+  const std::int32_t y_min = fixedpoint::least_of(a.y, b.y, c.y), y_max = fixedpoint::greatest_of(a.y, b.y, c.y);
   // |y| < 2^21 (the guard band): the products stay far inside 32 bits.
   return y_max >= view.row_begin * 256 + 128 && y_min <= view.row_end * 256 - 128;
 }

@@ -69,14 +69,10 @@ constexpr bool small_path_allowed(const PreparedScene& scene, const ObjectData& 
 // The largest difference of u or v between two of the triangle's vertices (texels * 2^frac).
 constexpr std::int32_t uv_range(const ObjectData& object, const std::uint32_t (&index)[3]) {
   std::int32_t range = 0;
-  for (int c = 0; c < 2; ++c) {
-    std::int32_t lo = object.uvs[index[0] * 2 + static_cast<std::uint32_t>(c)], hi = lo;
-    for (int k = 1; k < 3; ++k) {
-      const std::int32_t x = object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)];
-      lo = x < lo ? x : lo;
-      hi = x > hi ? x : hi;
-    }
-    range = hi - lo > range ? hi - lo : range;
+  for (std::uint32_t c = 0; c < 2; ++c) {
+    const std::int32_t a = object.uvs[index[0] * 2 + c], b = object.uvs[index[1] * 2 + c], d = object.uvs[index[2] * 2 + c];
+    const std::int32_t span = fixedpoint::greatest_of(a, b, d) - fixedpoint::least_of(a, b, d);
+    range = span > range ? span : range;
   }
   return range;
 }

@@ -7,8 +7,10 @@
 //   corner within 2^14 + 256 of every vertex, so an edge function is below 2^30
 //   and steps by 256 dx < 2^22 a row: exact, with the same top-left rule and
 //   the same pixels as setup.hpp's int64 edges;
-// * one floor division per edge and row step (a divide instruction, or the
-//   divisor's reciprocal on Cortex-M0+): no 64-bit division, no library call;
+// * each edge's bound on a row stepped from the one above: by the row step's
+//   quotient and remainder (one division, where the core has a divide
+//   instruction), or by search, a few compares and no division at all
+//   (Cortex-M0+): no 64-bit division, no library call;
 // * depth affine across the triangle and uv a quadratic within tolerance (see
 //   QuadraticAttribute), from one product each with the reciprocal of the
 //   area, stepped per row and per pixel with no divide at all;

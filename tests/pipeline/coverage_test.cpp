@@ -395,9 +395,8 @@ TEST_CASE("a small triangle's edge gives the same bounds stepped by division and
     if (ay == by) continue;  // horizontal: a small triangle bounds no row with it
     spanlight::SmallEdge e;
     e.start(ax, ay, bx, by);
-    // The rows the edge spans (centres 256 r + 128 within its ends); any row of the box is exact too.
-    const std::int32_t top = std::min(ay, by), bottom = std::max(ay, by);
-    const std::int32_t first = std::max(0, (top - 128 + 255) >> 8), last = ((bottom - 128) >> 8) + 1;
+    // The rows the edge spans (centres within its ends; y >= 0 here, so none above row 0).
+    const auto [first, last] = spanlight::rows_centred_in(std::min(ay, by), std::max(ay, by));
     if (first >= last) continue;
     const std::int32_t start = first + static_cast<std::int32_t>(rng() % static_cast<std::uint64_t>(last - first));
     auto divided = e.bound<false>(start);

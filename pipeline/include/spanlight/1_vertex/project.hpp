@@ -24,6 +24,16 @@ struct ScreenVertex {
   int inv_w_exponent;
 };
 
+// The rows whose centres 256 r + 128 lie in [y_min, y_max] (window y in 1/256 px):
+// [first, end), empty when first >= end. |y| < 2^21 (the guard band), so an arithmetic
+// shift is the floor division.
+struct CentredRows {
+  std::int32_t first, end;
+};
+constexpr CentredRows rows_centred_in(std::int32_t y_min, std::int32_t y_max) {
+  return {(y_min - 128 + 255) >> 8, ((y_max - 128) >> 8) + 1};  // first centre >= y_min, past the last <= y_max
+}
+
 // The vertex divide's reciprocal: its table's index bits and Newton steps (the
 // sweep's memory figures count this table; named here so no one has to guess it).
 inline constexpr int vertex_divide_table_bits = 8;

@@ -128,10 +128,8 @@ constexpr bool setup_triangle(const ScreenVertex (&in)[3], Cull cull, int height
   const ScreenVertex& v2 = in[t.order[2]];
 
   const std::int32_t y_min = fixedpoint::least_of(v0.y, v1.y, v2.y), y_max = fixedpoint::greatest_of(v0.y, v1.y, v2.y);
-  // Rows whose centres 256 r + 128 lie in [y_min, y_max]; |y| < 2^21 (the guard band), so an
-  // arithmetic shift is the floor division.
-  std::int32_t r0 = (y_min - 128 + 255) >> 8;  // first centre >= y_min
-  std::int32_t r1 = ((y_max - 128) >> 8) + 1;  // past the last centre <= y_max
+  const CentredRows centred = rows_centred_in(y_min, y_max);
+  std::int32_t r0 = centred.first, r1 = centred.end;
   if (r0 < 0) r0 = 0;
   if (r1 > height) r1 = height;
   if (r0 >= r1) return false;

@@ -189,8 +189,8 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
     std::swap(x1, x2);
     std::swap(y1, y2);
   }
-  // Rows whose centres lie in [y_min, y_max], as setup_triangle takes them.
-  std::int32_t r0 = (y_min - 128 + 255) >> 8, r1 = ((y_max - 128) >> 8) + 1;
+  const CentredRows centred = rows_centred_in(y_min, y_max);  // as setup_triangle takes them
+  std::int32_t r0 = centred.first, r1 = centred.end;
   if (r0 < 0) r0 = 0;
   if (r1 > height) r1 = height;
   if (r0 >= r1) return true;

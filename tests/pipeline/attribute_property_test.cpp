@@ -69,6 +69,7 @@ struct PixelRecorder {
     scale = spanlight::surface_of(o, textures).scale;
     return {true, scale, 0, projector_count};
   }
+  spanlight::PixelRange passing(std::uint32_t, std::int32_t count, std::uint32_t, std::int32_t) const { return {0, count}; }
   void run(std::uint32_t first, std::int32_t count, const spanlight::PixelRun<P>& run) {
     spanlight::PixelRun<P> r = run;
     for (std::int32_t k = 0; k < count; ++k) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -175,5 +176,64 @@ TEST_CASE("the fused pass gives the multipass's bytes with 16-bit depth, also wh
     const auto loaded = spanlight::scene::load_scene(pt::scene_file(name));
     const auto prepared_shared = spanlight::prepare::prepare_scene(loaded);
     require_fused_equals_multipass(*prepared_shared, PixelFormat::rgb888, 16);
+  }
+}
+
+namespace {
+
+// Records which pixels a kernel's run touched (the small path trims runs to `passing`).
+struct TouchLog : spanlight::NoHooks {
+  std::vector<std::uint32_t>* pixels;
+  void touched(spanlight::Pass, std::uint32_t i) const { pixels->push_back(i); }
+};
+
+}  // namespace
+
+TEST_CASE("a pass's passing range starts at the first pixel its depth test takes, and its run writes nothing before it",
+          "[passes]") {
+  using spanlight::Features;
+  constexpr Features F = [] {
+    Features f{};
+    f.depth_bits = 16;
+    return f;
+  }();
+  const spanlight::DepthFormat<F.depth_bits> depth(16);
+  std::mt19937 rng(20261207);
+  std::uniform_int_distribution<std::uint32_t> word;
+  const int cases = pt::sanitized ? 2000 : 20000;
+  for (int n = 0; n < cases; ++n) {
+    const auto count = static_cast<std::int32_t>(1 + word(rng) % 40);
+    // Depth buffers of a few levels, so that runs pass, fail and tie in every pattern.
+    std::vector<std::uint16_t> buffer(static_cast<std::size_t>(count));
+    for (auto& d : buffer) d = static_cast<std::uint16_t>(0x8000u + (word(rng) % 5) * 0x100u);
+    const std::uint32_t z = 0x80000000u + (word(rng) % (6u << 24));
+    const auto dz = static_cast<std::int32_t>(word(rng) % (1u << 22)) - (1 << 21);
+    auto z_at = [&](std::int32_t k) { return z + static_cast<std::uint32_t>(k) * static_cast<std::uint32_t>(dz); };
+
+    // The first pixel whose stored depth is nearer, by brute force.
+    std::int32_t first = -1;
+    for (std::int32_t k = 0; k < count && first < 0; ++k)
+      if (depth.store(z_at(k)) < buffer[static_cast<std::size_t>(k)]) first = k;
+    std::vector<std::uint32_t> touched;
+    TouchLog log{{}, &touched};
+    spanlight::DepthAmbientKernel<F, std::uint16_t, TouchLog> kernel{{nullptr, buffer.data(), nullptr}, spanlight::white, depth, log};
+    const spanlight::PixelRange range = kernel.passing(0, count, z, dz);
+    INFO("case " << n << ", count " << count);
+    if (first < 0) {
+      REQUIRE(range.first == range.end);
+      continue;
+    }
+    REQUIRE(range.first == first);
+    REQUIRE(range.end == count);
+
+    // The kernel's run over the whole run writes nothing before the range (what makes the trim exact).
+    std::vector<std::uint8_t> colour(static_cast<std::size_t>(count) * 3);
+    kernel.band.color = colour.data();
+    spanlight::PixelRun<0> run{};
+    run.z = z;
+    run.dz = dz;
+    kernel.run<0>(0, count, run);
+    REQUIRE(!touched.empty());
+    REQUIRE(touched.front() == static_cast<std::uint32_t>(first));
   }
 }

@@ -29,6 +29,8 @@ struct CoordinateProbe {
     uv_unit = std::ldexp(1.0, -o.uv_frac_bits);
     return {o.texture >= 0, surface.scale, 0, scene->projector_count};
   }
+  // Every pixel a run covers is probed (run() keeps the nearest).
+  PixelRange passing(std::uint32_t, std::int32_t count, std::uint32_t, std::int32_t) const { return {0, count}; }
   // A stepped value back in texels: exact = (value as int32 >> shift) - offset (modulo the
   // texture's size where the sampler wraps; compare_coordinates compares modulo it).
   double texels(std::uint32_t value, int c) const {

@@ -106,14 +106,15 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
     run.s = run.t = run.r = {};
     run.front = {};
   }
-  QuadraticRows uv[2];
-  if (!needs.uv) {
-    uv[0] = uv[1] = QuadraticRows{};  // never read; set so that no path leaves them undefined
-    run.u = run.v = Stepped{};
-  } else {
+  // uv is set up at the first row with a pixel that passes the depth test: a triangle hidden
+  // behind those drawn before it (the back of a model drawn without culling) costs no uv planes.
+  QuadraticRows uv[2];  // set by start_uv, read only after it (no zeroing: a memset call)
+  bool uv_started = false;
+  if (!needs.uv) run.u = run.v = Stepped{};
+  auto start_uv = [&](std::int32_t row) {
     const std::int32_t e0 = weights.e[i0] >> 1, e1 = weights.e[i1] >> 1, e2 = weights.e[i2] >> 1;  // Q0.29
     const AffineAttribute e = t.affine(e0, e1 - e0, e2 - e0, 0);
-    const auto r0 = static_cast<std::uint32_t>(first - t.row0);
+    const auto r0 = static_cast<std::uint32_t>(row - t.row0);
     for (int c = 0; c < 2; ++c) {
       auto at = [&](int k) { return object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)]; };
       const int shift = needs.uv_scale.shift[c];
@@ -124,7 +125,8 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
     }
     run.u.curve = uv[0].curve();
     run.v.curve = uv[1].curve();
-  }
+    uv_started = true;
+  };
   hooks.triangle_rows();
   for (std::int32_t row = t.row_begin; row < first; ++row) t.next_row();  // fewer than 64 rows
   run.dz = static_cast<std::int32_t>(z.per_column);
@@ -132,17 +134,25 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
   for (std::int32_t row = first; row < last; ++row) {
     std::int32_t lo = -t.column0, hi = view.width - 1 - t.column0;  // columns of the view, relative to the corner
     if (t.columns(lo, hi)) {
-      const auto c = static_cast<std::uint32_t>(lo);
-      run.z = z_row + z.per_column * c;
-      if (needs.uv) {
-        uv[0].at(c, run.u.value, run.u.step);
-        uv[1].at(c, run.v.value, run.v.step);
+      const auto row_index = static_cast<std::uint32_t>((row - view.row_begin) * view.width + t.column0 + lo);
+      // Only a run with uv to set up gains from the trim: else the kernel's own test is as cheap.
+      const PixelRange seen = Kernel::may_need_uv
+                                  ? kernel.passing(row_index, hi - lo + 1, z_row + z.per_column * static_cast<std::uint32_t>(lo), run.dz)
+                                  : PixelRange{0, hi - lo + 1};
+      if (seen.first < seen.end) {
+        const auto c = static_cast<std::uint32_t>(lo + seen.first);
+        run.z = z_row + z.per_column * c;
+        if (Kernel::may_need_uv && needs.uv) {
+          if (!uv_started) start_uv(row);
+          uv[0].at(c, run.u.value, run.u.step);
+          uv[1].at(c, run.v.value, run.v.step);
+        }
+        kernel.run(row_index + static_cast<std::uint32_t>(seen.first), seen.end - seen.first, run);
       }
-      kernel.run(static_cast<std::uint32_t>((row - view.row_begin) * view.width + t.column0 + lo), hi - lo + 1, run);
     }
     t.next_row();
     z_row += z.per_row;
-    if (needs.uv) {
+    if (Kernel::may_need_uv && uv_started) {
       uv[0].next_row();
       uv[1].next_row();
     }

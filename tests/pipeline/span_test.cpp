@@ -5,7 +5,7 @@
 //   perspective curve at every pixel (the bound (1) of segments.hpp), in double;
 // * quadratic_steps' forward differences give that quadratic exactly when the
 //   scale has room, else within the stated 2^(2k-1) units over 2^k pixels;
-// * QuadraticRows walks the small triangle's quadratic exactly (mod 2^32);
+// * QuadraticAttribute::at gives the small triangle's quadratic exactly (mod 2^32);
 // * the small triangle's barycentric planes stay within their derived bound of
 //   the exact E_i / D at every pixel of the box;
 // * the small triangle's quadratic uv stays within 2^-T texel of the exact
@@ -136,27 +136,23 @@ TEST_CASE("quadratic_steps gives the quadratic through the three points exactly 
   CHECK(wrong == 0);
 }
 
-TEST_CASE("QuadraticRows walks a small triangle's quadratic exactly, modulo 2^32", "[span][small]") {
+TEST_CASE("QuadraticAttribute::at gives a small triangle's quadratic exactly at any row and column, modulo 2^32", "[span][small]") {
   std::independent_bits_engine<std::mt19937, 32, std::uint32_t> random(0x5a11);  // 32-bit results: the same sequence
   int wrong = 0;
   for (int n = 0; n < 200; ++n) {
     const spanlight::QuadraticAttribute q{random(), random(), random(), random(), random(), random()};
-    const std::uint32_t r0 = random() % 64;
-    spanlight::QuadraticRows rows{};
-    rows.start(q, r0);
-    for (std::uint32_t r = r0; r < 64; ++r) {
+    for (std::uint32_t r = random() % 64; r < 64; ++r) {
       for (const std::uint32_t c0 : {0u, 1u, 17u, 63u}) {
         std::uint32_t v, step;
-        rows.at(c0, v, step);
-        const std::uint32_t curve = rows.curve();
-        for (std::uint32_t c = c0; c < 64; ++c) {
+        q.at(r, c0, v, step);
+        const std::uint32_t curve = q.curve();
+        for (std::uint32_t c = c0; c < 64; ++c) {  // the kernel steps on from c0
           const std::uint32_t exact = q.q00 + q.q10 * c + q.q01 * r + q.q20 * c * c + q.q11 * c * r + q.q02 * r * r;
           wrong += v != exact;
           v += step;
           step += curve;
         }
       }
-      rows.next_row();
     }
   }
   CHECK(wrong == 0);
@@ -252,7 +248,7 @@ struct QuadraticErrors {
 
 // Random small triangles with perspective weights up to 1/32 apart and uv ranges from a
 // texel to 2^17 texels, walked as draw_small walks them (setup_small's edges, one
-// QuadraticRows a coordinate), against u = sum l_k u_k W_k / sum l_k W_k in double.
+// QuadraticAttribute a coordinate), against u = sum l_k u_k W_k / sum l_k W_k in double.
 QuadraticErrors quadratic_errors(int tolerance_log2) {
   std::independent_bits_engine<std::mt19937, 32, std::uint32_t> random(0x9a0d + tolerance_log2);
   constexpr int frac = 8;
@@ -285,12 +281,11 @@ QuadraticErrors quadratic_errors(int tolerance_log2) {
     // As draw_small: e's plane, then one quadratic a coordinate, from the first row.
     const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
     const spanlight::AffineAttribute e = t.affine(w.e[i0] >> 1, (w.e[i1] >> 1) - (w.e[i0] >> 1), (w.e[i2] >> 1) - (w.e[i0] >> 1), 0);
-    spanlight::QuadraticRows rows[2];
+    spanlight::QuadraticAttribute quadratic[2];
     for (int c = 0; c < 2; ++c) {
       const auto base = static_cast<std::uint32_t>(uv[i0][c]) << shift;
-      rows[c].start(spanlight::perspective_quadratic(t, base, shift, range, uv[i1][c] - uv[i0][c], w.e[i1],
-                                                     uv[i2][c] - uv[i0][c], w.e[i2], e),
-                    static_cast<std::uint32_t>(t.row_begin - t.row0));
+      quadratic[c] = spanlight::perspective_quadratic(t, base, shift, range, uv[i1][c] - uv[i0][c], w.e[i1],
+                                                      uv[i2][c] - uv[i0][c], w.e[i2], e);
     }
     const double area = double(v[1].x - v[0].x) * double(v[2].y - v[0].y) - double(v[1].y - v[0].y) * double(v[2].x - v[0].x);
     auto lambda = [&](int k, double x, double y) {  // the screen barycentric of vertex k
@@ -311,7 +306,7 @@ QuadraticErrors quadratic_errors(int tolerance_log2) {
           ++r.pixels;
           for (int q = 0; q < 2; ++q) {
             std::uint32_t value, step;
-            rows[q].at(static_cast<std::uint32_t>(c), value, step);
+            quadratic[q].at(static_cast<std::uint32_t>(row - t.row0), static_cast<std::uint32_t>(c), value, step);
             // The difference modulo the texture's wrap (2^32 step units), in texels.
             const double exact_units = std::fmod(num[q] / den * std::ldexp(1.0, shift), 0x1p32);
             const double diff = std::ldexp(std::remainder(double(value) - exact_units, 0x1p32), -texel_bits);
@@ -322,8 +317,6 @@ QuadraticErrors quadratic_errors(int tolerance_log2) {
         }
       }
       t.next_row();
-      rows[0].next_row();
-      rows[1].next_row();
     }
   }
   return r;

@@ -378,6 +378,16 @@ struct QuadraticAttribute {
     q.q02 = 0u - product(prr);
     return q;
   }
+
+  // The value and step at column c of row r of the box, exactly (mod 2^32), evaluated afresh at
+  // each run rather than stepped down the rows: a row the depth test hides costs nothing. The
+  // curve, 2 q20, is the same at every pixel.
+  constexpr void at(std::uint32_t r, std::uint32_t c, std::uint32_t& v, std::uint32_t& step) const {
+    const std::uint32_t slope_at_c = q10 + q11 * r + q20 * c;
+    v = q00 + (q01 + q02 * r) * r + slope_at_c * c;
+    step = slope_at_c + q20 * (c + 1);
+  }
+  constexpr std::uint32_t curve() const { return 2 * q20; }
 };
 
 // A coordinate's quadratic over the small triangle t: u_0 + offset in the step scale (`base`,
@@ -402,32 +412,5 @@ constexpr QuadraticAttribute perspective_quadratic(const SmallTriangle& t, std::
   return QuadraticAttribute::of(base, t.affine(0, weighted(d1, e1), weighted(d2, e2), 0), e, shift - extra);
 }
 
-// A quadratic attribute walked down the rows: at column 0 of the current row its
-// value and per-row change, and its per-column slope there.
-struct QuadraticRows {
-  std::uint32_t value, down, slope;
-  std::uint32_t q20, q11, q02x2;
-
-  constexpr void start(const QuadraticAttribute& q, std::uint32_t r) {
-    value = q.q00 + q.q01 * r + q.q02 * r * r;
-    down = q.q01 + q.q02 * (2 * r + 1);
-    slope = q.q10 + q.q11 * r;
-    q20 = q.q20;
-    q11 = q.q11;
-    q02x2 = 2 * q.q02;
-  }
-  constexpr void next_row() {
-    value += down;
-    down += q02x2;
-    slope += q11;
-  }
-  // The value and step at column c of this row (the curve, 2 q20, is the same at every pixel).
-  constexpr void at(std::uint32_t c, std::uint32_t& v, std::uint32_t& step) const {
-    const std::uint32_t slope_at_c = slope + q20 * c;
-    v = value + slope_at_c * c;
-    step = slope_at_c + q20 * (c + 1);
-  }
-  constexpr std::uint32_t curve() const { return 2 * q20; }
-};
 
 }  // namespace spanlight

@@ -108,20 +108,17 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
   }
   // uv is set up at the first row with a pixel that passes the depth test: a triangle hidden
   // behind those drawn before it (the back of a model drawn without culling) costs no uv planes.
-  QuadraticRows uv[2];  // set by start_uv, read only after it (no zeroing: a memset call)
+  QuadraticAttribute uv[2];  // set by start_uv, read only after it (no zeroing: a memset call)
   bool uv_started = false;
   if (!needs.uv) run.u = run.v = Stepped{};
-  auto start_uv = [&](std::int32_t row) {
+  auto start_uv = [&] {
     const std::int32_t e0 = weights.e[i0] >> 1, e1 = weights.e[i1] >> 1, e2 = weights.e[i2] >> 1;  // Q0.29
     const AffineAttribute e = t.affine(e0, e1 - e0, e2 - e0, 0);
-    const auto r0 = static_cast<std::uint32_t>(row - t.row0);
     for (int c = 0; c < 2; ++c) {
       auto at = [&](int k) { return object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)]; };
       const int shift = needs.uv_scale.shift[c];
       const std::uint32_t base = static_cast<std::uint32_t>(at(i0) + needs.uv_scale.offset[c]) << shift;
-      uv[c].start(perspective_quadratic(t, base, shift, range, at(i1) - at(i0), weights.e[i1], at(i2) - at(i0),
-                                        weights.e[i2], e),
-                  r0);
+      uv[c] = perspective_quadratic(t, base, shift, range, at(i1) - at(i0), weights.e[i1], at(i2) - at(i0), weights.e[i2], e);
     }
     run.u.curve = uv[0].curve();
     run.v.curve = uv[1].curve();
@@ -143,19 +140,16 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
         const auto c = static_cast<std::uint32_t>(lo + seen.first);
         run.z = z_row + z.per_column * c;
         if (Kernel::may_need_uv && needs.uv) {
-          if (!uv_started) start_uv(row);
-          uv[0].at(c, run.u.value, run.u.step);
-          uv[1].at(c, run.v.value, run.v.step);
+          if (!uv_started) start_uv();
+          const auto r = static_cast<std::uint32_t>(row - t.row0);
+          uv[0].at(r, c, run.u.value, run.u.step);
+          uv[1].at(r, c, run.v.value, run.v.step);
         }
         kernel.run(row_index + static_cast<std::uint32_t>(seen.first), seen.end - seen.first, run);
       }
     }
     t.next_row();
     z_row += z.per_row;
-    if (Kernel::may_need_uv && uv_started) {
-      uv[0].next_row();
-      uv[1].next_row();
-    }
   }
 }
 

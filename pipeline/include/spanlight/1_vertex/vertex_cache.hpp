@@ -7,7 +7,10 @@
 // same window position for a vertex.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
+#include <utility>
 
 #include "spanlight/1_vertex/clip.hpp"
 #include "spanlight/1_vertex/project.hpp"
@@ -24,11 +27,18 @@ struct CachedVertex {
 inline constexpr ClipPlane clip_planes[] = {ClipPlane::near, ClipPlane::far, ClipPlane::left,
                                            ClipPlane::right, ClipPlane::bottom, ClipPlane::top};
 
+// Bit k set where point c lies more than `margin` beyond plane k. Unrolled over the planes, so
+// each distance is its formula alone (looped, -Os dispatched each through a switch table).
+template <std::size_t... K>
+constexpr unsigned planes_beyond(const Vec4Wide& c, std::int64_t gw, std::int64_t margin, std::index_sequence<K...>) {
+  return ((plane_distance_with(clip_planes[K], c, gw) < -margin ? 1u << K : 0u) | ...);
+}
+constexpr unsigned planes_beyond(const Vec4Wide& c, std::int64_t guard, std::int64_t margin) {
+  return planes_beyond(c, guard_w(c, guard), margin, std::make_index_sequence<std::size(clip_planes)>{});
+}
+
 constexpr std::uint8_t outside_planes(const Vec4Wide& c, std::int64_t guard) {
-  const std::int64_t gw = guard_w(c, guard);
-  std::uint8_t bits = 0;
-  for (int k = 0; k < 6; ++k) bits = static_cast<std::uint8_t>(bits | (plane_distance_with(clip_planes[k], c, gw) < 0 ? 1u << k : 0u));
-  return bits;
+  return static_cast<std::uint8_t>(planes_beyond(c, guard, 0));
 }
 
 // Whether a whole object lies beyond one clip plane, from its bounding box: then every vertex
@@ -45,11 +55,7 @@ constexpr std::uint8_t outside_planes(const Vec4Wide& c, std::int64_t guard) {
   for (unsigned corner = 0; corner < 8 && beyond_all != 0; ++corner) {
     const std::int32_t p[3] = {(corner & 1u) ? box.max[0] : box.min[0], (corner & 2u) ? box.max[1] : box.min[1],
                                (corner & 4u) ? box.max[2] : box.min[2]};
-    const Vec4Wide c = transform(to_clip, p);
-    const std::int64_t gw = guard_w(c, guard);
-    unsigned beyond = 0;
-    for (int k = 0; k < 6; ++k) beyond |= plane_distance_with(clip_planes[k], c, gw) < -margin ? 1u << k : 0u;
-    beyond_all &= beyond;
+    beyond_all &= planes_beyond(transform(to_clip, p), guard, margin);
   }
   return beyond_all != 0;
 }

@@ -82,6 +82,22 @@ constexpr std::int32_t uv_range(const ObjectData& object, const std::uint32_t (&
 // unit), and a pixel is at most 64 steps from the corner each way.
 inline constexpr std::uint32_t small_depth_margin = 256;
 
+// A small triangle's uv quadratics, one a coordinate (2_triangle/small.hpp, perspective_quadratic),
+// in the step scale of the object's sampler. A function, not a lambda of draw_small: GCC built
+// a lambda's closure at every triangle, hidden or not.
+inline void small_uv(const SmallTriangle& t, const ObjectData& object, const std::uint32_t (&index)[3],
+                     const PerspectiveWeights& weights, std::int32_t range, const StepScale& scale, QuadraticAttribute (&uv)[2]) {
+  const int i0 = t.order[0], i1 = t.order[1], i2 = t.order[2];
+  const std::int32_t e0 = weights.e[i0] >> 1, e1 = weights.e[i1] >> 1, e2 = weights.e[i2] >> 1;  // Q0.29
+  const AffineAttribute e = t.affine(e0, e1 - e0, e2 - e0, 0);
+  for (int c = 0; c < 2; ++c) {
+    auto at = [&](int k) { return object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)]; };
+    const int shift = scale.shift[c];
+    const std::uint32_t base = static_cast<std::uint32_t>(at(i0) + scale.offset[c]) << shift;
+    uv[c] = perspective_quadratic(t, base, shift, range, at(i1) - at(i0), weights.e[i1], at(i2) - at(i0), weights.e[i2], e);
+  }
+}
+
 // Draws a small triangle (2_triangle/small.hpp): rows by its 32-bit edges, and
 // each span as one run with affine depth and quadratic uv. Its edges step down
 // the rows in place. The run lives here, out of line from draw_pass, so it is
@@ -108,22 +124,9 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
   }
   // uv is set up at the first row with a pixel that passes the depth test: a triangle hidden
   // behind those drawn before it (the back of a model drawn without culling) costs no uv planes.
-  QuadraticAttribute uv[2];  // set by start_uv, read only after it (no zeroing: a memset call)
+  QuadraticAttribute uv[2];  // set by small_uv, read only after it (no zeroing: a memset call)
   bool uv_started = false;
   if (!needs.uv) run.u = run.v = Stepped{};
-  auto start_uv = [&] {
-    const std::int32_t e0 = weights.e[i0] >> 1, e1 = weights.e[i1] >> 1, e2 = weights.e[i2] >> 1;  // Q0.29
-    const AffineAttribute e = t.affine(e0, e1 - e0, e2 - e0, 0);
-    for (int c = 0; c < 2; ++c) {
-      auto at = [&](int k) { return object.uvs[index[k] * 2 + static_cast<std::uint32_t>(c)]; };
-      const int shift = needs.uv_scale.shift[c];
-      const std::uint32_t base = static_cast<std::uint32_t>(at(i0) + needs.uv_scale.offset[c]) << shift;
-      uv[c] = perspective_quadratic(t, base, shift, range, at(i1) - at(i0), weights.e[i1], at(i2) - at(i0), weights.e[i2], e);
-    }
-    run.u.curve = uv[0].curve();
-    run.v.curve = uv[1].curve();
-    uv_started = true;
-  };
   hooks.triangle_rows();
   for (std::int32_t row = t.row_begin; row < first; ++row) t.next_row();  // fewer than 64 rows
   run.dz = static_cast<std::int32_t>(z.per_column);
@@ -140,7 +143,12 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
         const auto c = static_cast<std::uint32_t>(lo + seen.first);
         run.z = z_row + z.per_column * c;
         if (Kernel::may_need_uv && needs.uv) {
-          if (!uv_started) start_uv();
+          if (!uv_started) {
+            small_uv(t, object, index, weights, range, needs.uv_scale, uv);
+            run.u.curve = uv[0].curve();
+            run.v.curve = uv[1].curve();
+            uv_started = true;
+          }
           const auto r = static_cast<std::uint32_t>(row - t.row0);
           uv[0].at(r, c, run.u.value, run.u.step);
           uv[1].at(r, c, run.v.value, run.v.step);

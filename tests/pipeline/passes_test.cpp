@@ -179,6 +179,19 @@ TEST_CASE("the fused pass gives the multipass's bytes with 16-bit depth, also wh
   }
 }
 
+TEST_CASE("on the mesh scenes, whose small triangles hand each pass only a row's pixels from the first its depth test takes, "
+          "the z-equal passes touch the visible pixels once and the fused pass gives the multipass's bytes",
+          "[passes]") {
+  for (const char* name : {"mesh_bear", "checks/mesh_terrain", "checks/mesh_torus_knot"}) {
+    INFO("scene " << name);
+    const auto prepared = spanlight::prepare::prepare_scene(spanlight::scene::load_scene(pt::scene_file(name)));
+    for (const std::uint8_t bits : {std::uint8_t{24}, std::uint8_t{16}}) {
+      require_invariant(*prepared, bits);
+      require_fused_equals_multipass(*prepared, PixelFormat::rgb565, bits);
+    }
+  }
+}
+
 namespace {
 
 // Records which pixels a kernel's run touched (the small path trims runs to `passing`).

@@ -30,6 +30,7 @@ struct Surface {
   TexelGrid grid;
   StepScale scale;  // how the walk steps uv for this sampler
   const TextureData* texture;  // for trilinear: its levels
+  std::uint8_t repeat_size;    // a repeating level 0's (log2 width << 4) | log2 height, as Features::repeat_sizes has it
 };
 
 constexpr Surface surface_of(const ObjectData& o, const TextureData* textures) {
@@ -50,6 +51,7 @@ constexpr Surface surface_of(const ObjectData& o, const TextureData* textures) {
   // Bilinear reads the texels around the point half a texel back (centres at half-integers).
   const std::int32_t back = bilinear ? -(std::int32_t{1} << (f - 1)) : 0;
   if (t.wrap == Wrap::repeat) {  // a fraction of the size in 32 bits: x_shift = 32 - log2 width >= f
+    s.repeat_size = static_cast<std::uint8_t>(((32 - s.grid.x_shift) << 4) | (32 - s.grid.y_shift));
     s.scale = {{back, back, 0},
                {static_cast<std::uint8_t>(s.grid.x_shift - f), static_cast<std::uint8_t>(s.grid.y_shift - f), 0},
                static_cast<std::uint8_t>(s.grid.x_shift < s.grid.y_shift ? s.grid.x_shift : s.grid.y_shift)};
@@ -59,11 +61,10 @@ constexpr Surface surface_of(const ObjectData& o, const TextureData* textures) {
   return s;
 }
 
-// Calls fn(Sampler<log2 w, log2 h>{texels}) when the grid's size is one of
-// F.repeat_sizes, and says whether it did.
+// Calls fn(Sampler<log2 w, log2 h>{texels}) when the grid's size (Surface::repeat_size, worked
+// out once an object) is one of F.repeat_sizes, and says whether it did.
 template <Features F, template <int, int> class Sampler, typename Fn>
-[[gnu::always_inline]] inline bool with_size(const TexelGrid& g, Fn&& fn) {
-  const auto size = static_cast<std::uint8_t>(((32 - g.x_shift) << 4) | (32 - g.y_shift));
+[[gnu::always_inline]] inline bool with_size(const TexelGrid& g, std::uint8_t size, Fn&& fn) {
   bool done = false;
   [&]<std::size_t... I>(std::index_sequence<I...>) SPANLIGHT_LAMBDA_INLINE_ATTR {
     (([&]() SPANLIGHT_LAMBDA_INLINE_ATTR {
@@ -108,7 +109,7 @@ template <Features F, typename Fn>
     }
     case SurfaceKind::bilinear_repeat:
       if constexpr (F.bilinear) {
-        if (with_size<F, BilinearRepeatOfSize>(g, sampled)) return;
+        if (with_size<F, BilinearRepeatOfSize>(g, s.repeat_size, sampled)) return;
         if constexpr (F.any_repeat_size) return sampled([g](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return bilinear_repeat(g, x, y); });
       }
       break;
@@ -120,7 +121,7 @@ template <Features F, typename Fn>
       break;
     case SurfaceKind::nearest_repeat:
       if constexpr (F.nearest) {
-        if (with_size<F, NearestRepeatOfSize>(g, sampled)) return;
+        if (with_size<F, NearestRepeatOfSize>(g, s.repeat_size, sampled)) return;
         if constexpr (F.any_repeat_size) return sampled([g](std::uint32_t x, std::uint32_t y) SPANLIGHT_LAMBDA_INLINE_ATTR { return nearest_repeat(g, x, y); });
       }
       break;

@@ -32,8 +32,9 @@ struct PixelRange {
 };
 
 // What the geometry walk asks of a pass: per object, what to interpolate; per
-// run of pixels, the work, and from which pixel on its depth test may take one. may_need_uv / may_need_projectors say at compile time
-// which walk shapes can occur, so no other is compiled for the pass.
+// run of pixels, the work, and from which pixel on its depth test may take one.
+// may_need_uv / may_need_projectors say at compile time which walk shapes can
+// occur, so no other is compiled for the pass.
 template <typename K, int P>
 concept PassKernel = requires(K& k, const ObjectData& o, const PixelRun<P>& r) {
   { K::may_need_uv } -> std::convertible_to<bool>;
@@ -101,6 +102,18 @@ template <typename Test>
     if (passes(first, z)) return {first, count};
   return {0, 0};
 }
+// The ranges of the two depth tests, run pixel k at depth[k]: nearer than the stored depth
+// (shadow, depth + ambient, fused), or equal to it (light, modulate; without the tie mask's claim).
+template <typename DepthT, typename Format>
+[[gnu::always_inline]] inline PixelRange nearer_range(const DepthT* depth, const Format& f, std::int32_t count, std::uint32_t z, std::int32_t dz) {
+  return passing_range(count, z, dz, [depth, &f](std::int32_t k, std::uint32_t zk) SPANLIGHT_LAMBDA_INLINE_ATTR { return f.store(zk) < depth[k]; });
+}
+template <typename DepthT, typename Format>
+[[gnu::always_inline]] inline PixelRange equal_range(const DepthT* depth, const Format& f, std::int32_t count, std::uint32_t z, std::int32_t dz) {
+  return passing_range(count, z, dz, [depth, &f](std::int32_t k, std::uint32_t zk) SPANLIGHT_LAMBDA_INLINE_ATTR {
+    return z_equal(depth, f, static_cast<std::uint32_t>(k), zk);
+  });
+}
 
 [[gnu::always_inline]] inline void step(Stepped& x) {
   x.value += x.step;
@@ -115,7 +128,7 @@ struct ShadowDepthKernel {
   Hooks& hooks;
   SpanNeeds object(const ObjectData&) { return {false, {}, 0, 0}; }
   PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
-    return passing_range(count, z, dz, [d = map + i, this](std::int32_t k, std::uint32_t zk) { return depth.store(zk) < d[k]; });
+    return nearer_range(map + i, depth, count, z, dz);
   }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
@@ -140,7 +153,7 @@ struct DepthAmbientKernel {
   Hooks& hooks;
   SpanNeeds object(const ObjectData&) { return {false, {}, 0, 0}; }
   PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
-    return passing_range(count, z, dz, [d = band.depth + i, this](std::int32_t k, std::uint32_t zk) { return depth.store(zk) < d[k]; });
+    return nearer_range(band.depth + i, depth, count, z, dz);
   }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
@@ -202,7 +215,7 @@ struct LightKernel {
   Hooks& hooks;
   SpanNeeds object(const ObjectData&) { return {false, {}, projector, projector + 1}; }
   PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
-    return passing_range(count, z, dz, [&](std::int32_t k, std::uint32_t zk) { return z_equal(band.depth, depth, i + static_cast<std::uint32_t>(k), zk); });
+    return equal_range(band.depth + i, depth, count, z, dz);
   }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
@@ -240,7 +253,7 @@ struct ModulateKernel {
     return {o.texture >= 0, surface.scale, 0, 0, surface.kind == SurfaceKind::trilinear};
   }
   PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
-    return passing_range(count, z, dz, [&](std::int32_t k, std::uint32_t zk) { return z_equal(band.depth, depth, i + static_cast<std::uint32_t>(k), zk); });
+    return equal_range(band.depth + i, depth, count, z, dz);
   }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
@@ -283,7 +296,7 @@ struct FusedKernel {
     return {o.texture >= 0, surface.scale, 0, projector_count, surface.kind == SurfaceKind::trilinear};
   }
   PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
-    return passing_range(count, z, dz, [d = band.depth + i, this](std::int32_t k, std::uint32_t zk) { return depth.store(zk) < d[k]; });
+    return nearer_range(band.depth + i, depth, count, z, dz);
   }
 
   template <int PR>

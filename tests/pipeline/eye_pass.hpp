@@ -40,8 +40,6 @@ struct CountingKernel {
   std::vector<int>* counts;
   bool* outside = nullptr;
   SpanNeeds object(const ObjectData&) const { return {false, {}, 0, 0}; }
-  // No depth test: every pixel of a run is counted.
-  PixelRange passing(std::uint32_t, std::int32_t count, std::uint32_t, std::int32_t) const { return {0, count}; }
   void run(std::uint32_t first, std::int32_t count, const EyeRun&) {
     for (std::int32_t k = 0; k < count; ++k) {
       const std::size_t i = std::size_t{first} + static_cast<std::size_t>(k);

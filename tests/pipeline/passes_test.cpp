@@ -202,51 +202,67 @@ struct TouchLog : spanlight::NoHooks {
 
 }  // namespace
 
-TEST_CASE("a pass's passing range starts at the first pixel its depth test takes, and its run writes nothing before it",
+TEST_CASE("the fused and modulate passes' passing range starts at the first pixel their depth test takes, and their "
+          "runs write nothing before it",
           "[passes]") {
   using spanlight::Features;
   constexpr Features F = [] {
     Features f{};
+    f.max_projectors = 0;
     f.depth_bits = 16;
     return f;
   }();
+  using Depth = std::uint16_t;
   const spanlight::DepthFormat<F.depth_bits> depth(16);
   std::mt19937 rng(20261207);
   std::uniform_int_distribution<std::uint32_t> word;
   const int cases = pt::sanitized ? 2000 : 20000;
   for (int n = 0; n < cases; ++n) {
     const auto count = static_cast<std::int32_t>(1 + word(rng) % 40);
-    // Depth buffers of a few levels, so that runs pass, fail and tie in every pattern.
-    std::vector<std::uint16_t> buffer(static_cast<std::size_t>(count));
-    for (auto& d : buffer) d = static_cast<std::uint16_t>(0x8000u + (word(rng) % 5) * 0x100u);
     const std::uint32_t z = 0x80000000u + (word(rng) % (6u << 24));
     const auto dz = static_cast<std::int32_t>(word(rng) % (1u << 22)) - (1 << 21);
-    auto z_at = [&](std::int32_t k) { return z + static_cast<std::uint32_t>(k) * static_cast<std::uint32_t>(dz); };
-
-    // The first pixel whose stored depth is nearer, by brute force.
-    std::int32_t first = -1;
-    for (std::int32_t k = 0; k < count && first < 0; ++k)
-      if (depth.store(z_at(k)) < buffer[static_cast<std::size_t>(k)]) first = k;
-    std::vector<std::uint32_t> touched;
-    TouchLog log{{}, &touched};
-    spanlight::DepthAmbientKernel<F, std::uint16_t, TouchLog> kernel{{nullptr, buffer.data(), nullptr}, spanlight::white, depth, log};
-    const spanlight::PixelRange range = kernel.passing(0, count, z, dz);
-    INFO("case " << n << ", count " << count);
-    if (first < 0) {
-      REQUIRE(range.first == range.end);
-      continue;
+    // Each stored depth equal to the run's there, behind it, in front of it or cleared, so that
+    // both tests pass and fail in every pattern.
+    std::vector<Depth> buffer(static_cast<std::size_t>(count));
+    std::int32_t first_nearer = -1, first_equal = -1;
+    for (std::int32_t k = 0; k < count; ++k) {
+      const std::uint32_t stored = depth.store(z + static_cast<std::uint32_t>(k) * static_cast<std::uint32_t>(dz));
+      const std::uint32_t kind = word(rng) % 4, by = 1 + word(rng) % 64;
+      const std::uint32_t d = kind == 0 ? stored : kind == 1 ? stored + by : kind == 2 ? stored - by : depth.clear;
+      buffer[static_cast<std::size_t>(k)] = static_cast<Depth>(d);
+      if (first_nearer < 0 && stored < d) first_nearer = k;
+      if (first_equal < 0 && d == stored) first_equal = k;
     }
-    REQUIRE(range.first == first);
-    REQUIRE(range.end == count);
-
-    // The kernel's run over the whole run writes nothing before the range (what makes the trim exact).
-    std::vector<std::uint8_t> colour(static_cast<std::size_t>(count) * 3);
-    kernel.band.color = colour.data();
-    spanlight::PixelRun<0> run{};
-    run.z = z;
-    run.dz = dz;
-    kernel.run<0>(0, count, run);
-    REQUIRE(!touched.empty());
-    REQUIRE(touched.front() == static_cast<std::uint32_t>(first));
+    INFO("case " << n << ", count " << count);
+    // passing() against the brute-force first pixel, then the whole run: its first write is there.
+    auto check = [&](auto& kernel, std::vector<std::uint32_t>& touched, std::int32_t first) {
+      const spanlight::PixelRange range = kernel.passing(0, count, z, dz);
+      if (first < 0) {
+        REQUIRE(range.first == range.end);
+      } else {
+        REQUIRE(range.first == first);
+        REQUIRE(range.end == count);
+      }
+      spanlight::PixelRun<0> run{};
+      run.z = z;
+      run.dz = dz;
+      kernel.run(0, count, run);
+      if (first < 0) REQUIRE(touched.empty());
+      else REQUIRE((!touched.empty() && touched.front() == static_cast<std::uint32_t>(first)));
+    };
+    std::vector<std::uint8_t> colour(static_cast<std::size_t>(count) * 3), tie_mask(spanlight::tie_mask_bytes(static_cast<std::uint32_t>(count)));
+    {
+      std::vector<std::uint32_t> touched;
+      TouchLog log{{}, &touched};
+      spanlight::ModulateKernel<F, Depth, TouchLog> modulate{{colour.data(), buffer.data(), tie_mask.data()}, nullptr, depth, log};
+      check(modulate, touched, first_equal);
+    }
+    {
+      std::vector<std::uint32_t> touched;
+      TouchLog log{{}, &touched};
+      spanlight::FusedKernel<F, Depth, TouchLog> fused{{colour.data(), buffer.data(), tie_mask.data()}, nullptr, nullptr, 0, spanlight::white,
+                                                       depth, log};
+      check(fused, touched, first_nearer);  // last: it writes depth
+    }
   }
 }

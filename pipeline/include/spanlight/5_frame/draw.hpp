@@ -135,10 +135,11 @@ inline void draw_small(SmallTriangle& t, const ObjectData& object, const std::ui
     std::int32_t lo = -t.column0, hi = view.width - 1 - t.column0;  // columns of the view, relative to the corner
     if (t.columns(lo, hi)) {
       const auto row_index = static_cast<std::uint32_t>((row - view.row_begin) * view.width + t.column0 + lo);
-      // Only a run with uv to set up gains from the trim: else the kernel's own test is as cheap.
-      const PixelRange seen = Kernel::may_need_uv
-                                  ? kernel.passing(row_index, hi - lo + 1, z_row + z.per_column * static_cast<std::uint32_t>(lo), run.dz)
-                                  : PixelRange{0, hi - lo + 1};
+      // Only a run with uv to set up gains from the trim (and only such a pass has `passing`):
+      // else the kernel's own test is as cheap.
+      PixelRange seen{0, hi - lo + 1};
+      if constexpr (Kernel::may_need_uv)
+        seen = kernel.passing(row_index, seen.end, z_row + z.per_column * static_cast<std::uint32_t>(lo), run.dz);
       if (seen.first < seen.end) {
         const auto c = static_cast<std::uint32_t>(lo + seen.first);
         run.z = z_row + z.per_column * c;

@@ -32,17 +32,19 @@ struct PixelRange {
 };
 
 // What the geometry walk asks of a pass: per object, what to interpolate; per
-// run of pixels, the work, and from which pixel on its depth test may take one.
-// may_need_uv / may_need_projectors say at compile time which walk shapes can
-// occur, so no other is compiled for the pass.
+// run of pixels, the work. may_need_uv / may_need_projectors say at compile time
+// which walk shapes can occur, so no other is compiled for the pass. A pass that
+// may need uv also says from which pixel of a run its depth test may take one
+// (`passing`): the small path sets up uv only for a row that has one.
 template <typename K, int P>
 concept PassKernel = requires(K& k, const ObjectData& o, const PixelRun<P>& r) {
   { K::may_need_uv } -> std::convertible_to<bool>;
   { K::may_need_projectors } -> std::convertible_to<bool>;
   { k.object(o) } -> std::same_as<SpanNeeds>;
   k.run(std::uint32_t{0}, std::int32_t{1}, r);
+} && (!K::may_need_uv || requires(const K& k) {
   { k.passing(std::uint32_t{0}, std::int32_t{1}, std::uint32_t{0}, std::int32_t{0}) } -> std::same_as<PixelRange>;
-};
+});
 
 // The buffers of the band a pass writes: pixel (row, column) of the band is index row * width + column.
 template <PixelFormat Format, typename DepthT>
@@ -103,7 +105,7 @@ template <typename Test>
   return {0, 0};
 }
 // The ranges of the two depth tests, run pixel k at depth[k]: nearer than the stored depth
-// (shadow, depth + ambient, fused), or equal to it (light, modulate; without the tie mask's claim).
+// (the fused pass), or equal to it (modulate; without the tie mask's claim).
 template <typename DepthT, typename Format>
 [[gnu::always_inline]] inline PixelRange nearer_range(const DepthT* depth, const Format& f, std::int32_t count, std::uint32_t z, std::int32_t dz) {
   return passing_range(count, z, dz, [depth, &f](std::int32_t k, std::uint32_t zk) SPANLIGHT_LAMBDA_INLINE_ATTR { return f.store(zk) < depth[k]; });
@@ -127,9 +129,6 @@ struct ShadowDepthKernel {
   DepthFormat<F.depth_bits> depth;
   Hooks& hooks;
   SpanNeeds object(const ObjectData&) { return {false, {}, 0, 0}; }
-  PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
-    return nearer_range(map + i, depth, count, z, dz);
-  }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
     DepthT* d = map + i;
@@ -152,9 +151,6 @@ struct DepthAmbientKernel {
   DepthFormat<F.depth_bits> depth;
   Hooks& hooks;
   SpanNeeds object(const ObjectData&) { return {false, {}, 0, 0}; }
-  PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
-    return nearer_range(band.depth + i, depth, count, z, dz);
-  }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
     typename Color::Storage stored_ambient[Color::per_pixel];
@@ -214,9 +210,6 @@ struct LightKernel {
   DepthFormat<F.depth_bits> depth;
   Hooks& hooks;
   SpanNeeds object(const ObjectData&) { return {false, {}, projector, projector + 1}; }
-  PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
-    return equal_range(band.depth + i, depth, count, z, dz);
-  }
   template <int P>
   void run(std::uint32_t i, std::int32_t count, const PixelRun<P>& r) const {
     const int j = projector;

@@ -112,6 +112,19 @@ constexpr std::int64_t signed_double_area(const ScreenVertex& a, const ScreenVer
   return (std::int64_t{b.x} - a.x) * (std::int64_t{c.y} - a.y) - (std::int64_t{b.y} - a.y) * (std::int64_t{c.x} - a.x);
 }
 
+// Whether the snapped corners run clockwise as seen in the image: the triangle shows the camera
+// its back (signed_double_area > 0). |x|, |y| < 2^21, so each difference fits 32 bits. Differences
+// in [-2^15, 2^15) (under 128 pixels a side: most of a model's triangles) give products of at
+// most 2^30 whose difference stays within 2^31 - 2^15: on a core without a long multiply
+// (Cortex-M0+) no 64-bit product there.
+constexpr bool faces_away(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+  const std::int32_t x1 = b.x - a.x, y1 = b.y - a.y, x2 = c.x - a.x, y2 = c.y - a.y;
+  auto in_15_bits = [](std::int32_t d) { return static_cast<std::uint32_t>(d) + (1u << 15) < (1u << 16); };
+  if (!fixedpoint::has_long_multiply && in_15_bits(x1) && in_15_bits(y1) && in_15_bits(x2) && in_15_bits(y2))
+    return x1 * y2 - y1 * x2 > 0;
+  return fixedpoint::mul_s32_setup(x1, y2) - fixedpoint::mul_s32_setup(y1, x2) > 0;
+}
+
 // Builds the setup; false when the triangle is culled, has no area, or
 // covers no row of the target. In y-down window coordinates a triangle that
 // is counter-clockwise as seen in the image (front) has a negative area.

@@ -203,7 +203,7 @@ struct TouchLog : spanlight::NoHooks {
 }  // namespace
 
 TEST_CASE("the fused and modulate passes' passing range starts at the first pixel their depth test takes, and their "
-          "runs write nothing before it",
+          "runs write nothing before it, and the fused pass hides a box only where every pixel is nearer",
           "[passes]") {
   using spanlight::Features;
   constexpr Features F = [] {
@@ -262,6 +262,15 @@ TEST_CASE("the fused and modulate passes' passing range starts at the first pixe
       TouchLog log{{}, &touched};
       spanlight::FusedKernel<F, Depth, TouchLog> fused{{colour.data(), buffer.data(), tie_mask.data()}, nullptr, nullptr, 0, spanlight::white,
                                                        depth, log};
+      // hides() against brute force at the run's first depth, on the buffer as rows of `columns`
+      // pixels `stride` apart (the last row ends at (rows - 1) stride + columns <= count).
+      const std::int32_t columns = 1 + static_cast<std::int32_t>(word(rng) % 6), stride = columns + 1;
+      const std::int32_t rows = (count + 1) / stride;
+      bool hidden = true;
+      for (std::int32_t r = 0; r < rows; ++r)
+        for (std::int32_t c = 0; c < columns; ++c)
+          hidden = hidden && !(depth.store(z) < buffer[static_cast<std::size_t>(r * stride + c)]);
+      REQUIRE(fused.hides(0, columns, rows, stride, z) == hidden);
       check(fused, touched, first_nearer);  // last: it writes depth
     }
   }

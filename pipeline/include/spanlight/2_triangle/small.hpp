@@ -164,10 +164,19 @@ struct SmallTriangle {
   }
 };
 
+// Whether a pass may still take a pixel of the box: columns [column0, column0 + columns) of rows
+// [row_begin, row_end), absolute. By default it may.
+struct AnyPixelMaySee {
+  constexpr bool operator()(std::int32_t, std::int32_t, std::int32_t, std::int32_t) const { return true; }
+};
+
 // Builds the setup of a small triangle from its snapped window vertices; false
 // when it is not small (the caller takes the general path), and `covers` false
-// when it is culled, has no area or no row (then it draws nothing either way).
-constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, SmallTriangle& t, bool& covers) {
+// when it is culled, has no area or no row, or `may_see` says no pixel of its box
+// can pass (then it draws nothing either way).
+template <typename MaySee = AnyPixelMaySee>
+constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, SmallTriangle& t, bool& covers,
+                           const MaySee& may_see = {}) {
   covers = false;
   const std::int32_t x_min = fixedpoint::least_of(in[0].x, in[1].x, in[2].x), x_max = fixedpoint::greatest_of(in[0].x, in[1].x, in[2].x);
   const std::int32_t y_min = fixedpoint::least_of(in[0].y, in[1].y, in[2].y), y_max = fixedpoint::greatest_of(in[0].y, in[1].y, in[2].y);
@@ -215,6 +224,17 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
     if (highest > limit || lowest < -limit) return false;
     if (e.slope == 0) level = i;
   }
+  // A horizontal edge's E is the same all along a row, so it takes or leaves whole rows:
+  // those at the end where it lies. E at row R: row_value + (R - row0) row_step, |.| < 2^29 + 2^28.1.
+  if (level < 3) {
+    const SmallEdge& e = edge[level];
+    auto inside = [&](std::int32_t row) { return e.row_value + (row - t.row0) * e.row_step >= e.bias; };
+    while (r0 < r1 && !inside(r0)) ++r0;
+    while (r1 > r0 && !inside(r1 - 1)) --r1;
+    if (r0 >= r1) return true;
+  }
+  // Behind what the pass has drawn all over the box: the rest of setup (planes, edge bounds) is not needed.
+  if (!may_see(t.column0, columns, r0, r1)) return true;
   // The barycentrics' planes: E_i / D, times 2^26. rcp ~ 2^(30 + L) / D (L the bit length of D),
   // so x / D 2^26 = x rcp / 2^(4 + L); |x| < 2^30 and rcp <= 2^31: the product fits 64 bits.
   const int area_log2 = fixedpoint::bit_length32(static_cast<std::uint32_t>(area2));
@@ -230,15 +250,6 @@ constexpr bool setup_small(const ScreenVertex (&in)[3], Cull cull, int height, S
   };
   t.l1 = plane(edge[1]);
   t.l2 = plane(edge[2]);
-  // A horizontal edge's E is the same all along a row, so it takes or leaves whole rows:
-  // those at the end where it lies. E at row R: row_value + (R - row0) row_step, |.| < 2^29 + 2^28.1.
-  if (level < 3) {
-    const SmallEdge& e = edge[level];
-    auto inside = [&](std::int32_t row) { return e.row_value + (row - t.row0) * e.row_step >= e.bias; };
-    while (r0 < r1 && !inside(r0)) ++r0;
-    while (r1 > r0 && !inside(r1 - 1)) --r1;
-    if (r0 >= r1) return true;
-  }
   t.row_begin = r0;
   t.row_end = r1;
   // The sloped edges, from the first row on: one each side, or (no horizontal edge: the three dy

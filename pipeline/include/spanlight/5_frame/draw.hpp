@@ -262,10 +262,6 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     // enough for its quadratic uv, and the general path is to draw it. Out of line, so that its
     // state is never on the stack under the general path's walk, where a frame's peak is.
     auto drawn_small = [&](const ScreenVertex (&corners)[3], const std::uint32_t (&index)[3]) SPANLIGHT_LAMBDA_NOINLINE_ATTR {
-      SmallTriangle t;
-      bool covers = false;
-      if (!setup_small(corners, object.cull, view.height, t, covers)) return false;
-      if (!covers || t.row_end <= view.row_begin || t.row_begin >= view.row_end) return true;  // nothing to draw
       std::uint32_t z_lo = 0xFFFFFFFFu, z_hi = 0;
       for (const ScreenVertex& s : corners) {
         const std::uint32_t z = static_cast<std::uint32_t>(s.z) << 2;
@@ -280,6 +276,24 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
                          (range < (1 << 26) && perspective_weights_of(corners, weights) &&
                           quadratic_enough(weights, range, object.uv_frac_bits, small_texel_bits, knobs.tolerance_log2));
       if (!depth_ok || !uv_ok) return false;
+      // A pass that keeps the nearer depth skips a triangle that every pixel of its box (in the band)
+      // already holds nearer: its pixels' depths stay within small_depth_margin of its vertices'.
+      auto may_see = [&](std::int32_t column0, std::int32_t columns, std::int32_t r0, std::int32_t r1) {
+        if constexpr (requires { kernel.hides(0u, 1, 1, 1, 0u); }) {
+          const std::int32_t c0 = std::max(column0, std::int32_t{0}), c1 = std::min(column0 + columns, std::int32_t{view.width});
+          r0 = std::max(r0, std::int32_t{view.row_begin});
+          r1 = std::min(r1, std::int32_t{view.row_end});
+          if (c0 >= c1 || r0 >= r1) return false;
+          const auto first = static_cast<std::uint32_t>((r0 - view.row_begin) * view.width + c0);
+          return !kernel.hides(first, c1 - c0, r1 - r0, view.width, z_lo - small_depth_margin);
+        } else {
+          return true;
+        }
+      };
+      SmallTriangle t;
+      bool covers = false;
+      if (!setup_small(corners, object.cull, view.height, t, covers, may_see)) return false;
+      if (!covers || t.row_end <= view.row_begin || t.row_begin >= view.row_end) return true;  // nothing to draw
       draw_small<P>(t, object, index, corners, weights, range, needs, view, kernel, hooks);
       return true;
     };

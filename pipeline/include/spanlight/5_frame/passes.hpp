@@ -35,7 +35,9 @@ struct PixelRange {
 // run of pixels, the work. may_need_uv / may_need_projectors say at compile time
 // which walk shapes can occur, so no other is compiled for the pass. A pass that
 // may need uv also says from which pixel of a run its depth test may take one
-// (`passing`): the small path sets up uv only for a row that has one.
+// (`passing`): the small path sets up uv only for a row that has one. A pass that keeps the
+// nearer depth may say whether a box is hidden (`hides`): the small path then skips the rest
+// of a triangle's setup.
 template <typename K, int P>
 concept PassKernel = requires(K& k, const ObjectData& o, const PixelRun<P>& r) {
   { K::may_need_uv } -> std::convertible_to<bool>;
@@ -290,6 +292,15 @@ struct FusedKernel {
   }
   PixelRange passing(std::uint32_t i, std::int32_t count, std::uint32_t z, std::int32_t dz) const {
     return nearer_range(band.depth + i, depth, count, z, dz);
+  }
+  // Whether every pixel of the box (columns x rows from pixel i, rows `stride` apart) already holds a
+  // depth this pass would not replace with z or anything farther: a triangle nearest at z draws nothing there.
+  bool hides(std::uint32_t i, std::int32_t columns, std::int32_t rows, std::int32_t stride, std::uint32_t z) const {
+    const auto s = depth.store(z);
+    for (std::int32_t r = 0; r < rows; ++r, i += static_cast<std::uint32_t>(stride))
+      for (std::int32_t c = 0; c < columns; ++c)
+        if (s < band.depth[i + static_cast<std::uint32_t>(c)]) return false;
+    return true;
   }
 
   template <int PR>

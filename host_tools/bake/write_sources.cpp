@@ -157,7 +157,7 @@ std::string baked_scene_source(const prepare::PreparedStorage& prepared, const s
         << ", {{" << d.bounds.min[0] << ", " << d.bounds.min[1] << ", " << d.bounds.min[2] << "}, {" << d.bounds.max[0]
         << ", " << d.bounds.max[1] << ", " << d.bounds.max[2] << "}}, " << d.texture << ", " << int(d.uv_frac_bits) << ", "
         << (d.cull == Cull::back ? "Cull::back" : "Cull::none") << ", {" << int(d.color[0]) << ", " << int(d.color[1])
-        << ", " << int(d.color[2]) << "}, TexgenSpace::none},\n";
+        << ", " << int(d.color[2]) << "}, TexgenSpace::none, " << boolean(d.closed) << "},\n";
   }
   out << "};\n\nconst ProjectorData projectors[" << (s.projector_count ? s.projector_count : 1) << "] = {\n";
   for (int j = 0; j < s.projector_count; ++j) {

@@ -1,5 +1,6 @@
 #include "prepare/prepare.hpp"
 
+#include "prepare/closed_mesh.hpp"
 #include "scene/mip_chain.hpp"
 
 #include <algorithm>
@@ -233,6 +234,7 @@ std::unique_ptr<PreparedStorage> prepare_scene(const scene::Scene& s) {
     d.cull = o.cull == scene::Cull::back ? Cull::back : Cull::none;
     for (int c = 0; c < 3; ++c) d.color[c] = to_unorm8(o.color[c]);
     d.texgen = TexgenSpace::none;
+    d.closed = closed_solid(pos, o.mesh.triangles);
     out->objects.push_back(d);
     out->object_names.push_back(o.name);
     max_vertices = std::max(max_vertices, d.vertex_count);

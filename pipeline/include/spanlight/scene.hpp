@@ -62,6 +62,8 @@ struct ObjectData {
   Cull cull;
   std::uint8_t color[3];          // object colour, round(255 * c)
   TexgenSpace texgen;             // none: uvs as given
+  bool closed;                    // a closed solid (host_tools/prepare/closed_mesh.hpp): seen from outside, its
+                                  // back faces are never the nearest surface, and draw_pass leaves them out
 };
 
 struct ProjectorData {

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "spanlight/1_vertex/clip.hpp"
+#include "spanlight/1_vertex/closed.hpp"
 #include "spanlight/1_vertex/project.hpp"
 #include "spanlight/1_vertex/transform.hpp"
 #include "spanlight/1_vertex/vertex_cache.hpp"
@@ -197,6 +198,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
                                                         : matrices.light_clip_from_object[o * pc + view.light_projector];
     const Mat4Block* to_projector = matrices.projector_from_object + o * pc;
     if (object.vertex_count > 8 && object_beyond_a_plane(object.bounds, to_clip, guard)) continue;
+    // A closed solid seen from outside shows no back face (1_vertex/closed.hpp): cull them.
+    const Cull cull = object.closed && closed_and_outside(object, to_clip, guard) ? Cull::back : object.cull;
     const bool small_allowed = small_path_allowed(scene, object, view);
     // The small path's uv step scale, from the texture alone (the same in every pass, as the path's choice).
     const int small_texel_bits = object.texture < 0 ? 32 : surface_of(object, scene.textures).scale.texel_bits;
@@ -205,7 +208,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     // Stages 2 and 3 for one triangle whose window vertices are known (cached, or cut by the clip stage).
     auto draw_general = [&](const ScreenVertex (&corners)[3], const ClipVertex<P>* const (&clip_corners)[3]) {
       TriangleSetup setup{};
-      if (!setup_triangle(corners, object.cull, view.height, setup)) return;
+      if (!setup_triangle(corners, cull, view.height, setup)) return;
       if (setup.row_end <= view.row_begin || setup.row_begin >= view.row_end) return;
       TriangleAttributes<P> attrs{};
       const ClipVertex<P>* const ordered[3] = {clip_corners[setup.order[0]], clip_corners[setup.order[1]],
@@ -292,7 +295,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       };
       SmallTriangle t;
       bool covers = false;
-      if (!setup_small(corners, object.cull, view.height, t, covers, may_see)) return false;
+      if (!setup_small(corners, cull, view.height, t, covers, may_see)) return false;
       if (!covers || t.row_end <= view.row_begin || t.row_begin >= view.row_end) return true;  // nothing to draw
       draw_small<P>(t, object, index, corners, weights, range, needs, view, kernel, hooks);
       return true;
@@ -303,7 +306,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     // and then cost their setup and a depth test, not a shaded pixel (mesh_bear: 15 % of a frame).
     // The picture is the nearest surface either way; only exact depth ties may go the other way,
     // which the spec leaves to the implementation. A triangle cut by a clip plane goes first.
-    const int sides = object.cull == Cull::none ? 2 : 1;
+    const int sides = cull == Cull::none ? 2 : 1;
     for (int side = 0; side < sides; ++side) {
       for (std::uint32_t tri = 0; tri < object.triangle_count; ++tri) {
         const std::uint32_t index[3] = {object.indices[tri * 3], object.indices[tri * 3 + 1], object.indices[tri * 3 + 2]};

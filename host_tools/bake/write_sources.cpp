@@ -85,6 +85,7 @@ std::string baked_config_source(const prepare::PreparedStorage& prepared, const 
       << ", .shadows = " << boolean(f.shadows) << ", .pcf = " << boolean(f.pcf) << ",\n    .nearest = " << boolean(f.nearest)
       << ", .bilinear = " << boolean(f.bilinear) << ", .clamped = " << boolean(f.clamped) << ", .tinted = " << boolean(f.tinted)
       << ", .trilinear = " << boolean(f.trilinear) << ", .falloff = " << boolean(f.falloff) << ", .facing = " << boolean(f.facing)
+      << ", .closed_solids = " << boolean(f.closed_solids)
       << ",\n    .format = spanlight::PixelFormat::" << (knobs.format == PixelFormat::rgb888 ? "rgb888" : (knobs.format == PixelFormat::rgb565 ? "rgb565" : "rgb565_be"))
       << ", .fused = " << boolean(f.fused) << ", .multipass = " << boolean(f.multipass)
       << ",\n    .table_bits = " << int(f.table_bits) << ", .newton = " << int(f.newton) << ", .depth_bits = " << int(f.depth_bits)

@@ -11,7 +11,7 @@ namespace {
 
 // A textured room's build: no projector, repeat textures, fused only, reciprocal and depth fixed.
 constexpr Features texture_only{.max_projectors = 0, .shadows = false, .pcf = false, .clamped = false,
-                                .tinted = false, .trilinear = false, .falloff = false, .facing = false,
+                                .tinted = false, .trilinear = false, .falloff = false, .facing = false, .closed_solids = false,
                                 .format = PixelFormat::rgb565, .multipass = false, .table_bits = 8, .newton = 1,
                                 .depth_bits = 16};
 

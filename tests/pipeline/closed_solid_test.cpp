@@ -16,6 +16,7 @@
 #include "prepare/closed_mesh.hpp"
 #include "sphere_scene.hpp"
 #include "spanlight/1_vertex/closed.hpp"
+#include "spanlight/scene_features.hpp"
 
 using namespace spanlight;
 using namespace spanlight::ptest;
@@ -127,12 +128,17 @@ TEST_CASE("closed_solid: closed, consistently wound and outward, by position", "
   CHECK_FALSE(prepare::closed_solid(two, one_inward));  // the total volume is 0, not below it
 }
 
-TEST_CASE("prepare marks the closed models closed and the open ones open", "[pipeline][closed]") {
+TEST_CASE("prepare marks the closed models closed and the open ones open, and bake links the culling for them", "[pipeline][closed]") {
   CHECK(prepare::prepare_scene(sphere_scene(scene::Cull::none))->objects[0].closed);
   const auto bear = prepare::prepare_scene(scene::load_scene(scene_file("mesh_bear")));
   for (const ObjectData& object : bear->objects) CHECK(object.closed);  // the bear and its buttons
   const auto terrain = prepare::prepare_scene(scene::load_scene(scene_file("checks/mesh_terrain")));
   CHECK_FALSE(terrain->objects[0].closed);  // a patch of ground
+  // Only a scene with one compiles the culling of closed solids (Features::closed_solids).
+  CHECK(features_of(bear->scene, Knobs{}).closed_solids);
+  CHECK_FALSE(features_of(terrain->scene, Knobs{}).closed_solids);
+  const auto culled = prepare::prepare_scene(sphere_scene(scene::Cull::back));
+  CHECK_FALSE(features_of(culled->scene, Knobs{}).closed_solids);  // culled already
 }
 
 TEST_CASE("view_keeps_winding: true only where the exact determinant is negative", "[pipeline][closed]") {

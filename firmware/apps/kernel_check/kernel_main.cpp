@@ -19,7 +19,7 @@ using namespace spanlight;
 
 template <int DepthBits, PixelFormat Format>
 constexpr Features features{.max_projectors = 0, .shadows = false, .pcf = false, .nearest = true, .bilinear = true,
-                            .clamped = false, .tinted = false, .trilinear = false, .falloff = false, .facing = false,
+                            .clamped = false, .tinted = false, .trilinear = false, .falloff = false, .facing = false, .closed_solids = false,
                             .format = Format, .fused = true, .multipass = false, .table_bits = 8, .newton = 1,
                             .depth_bits = DepthBits, .repeat_sizes = {}, .any_repeat_size = true};
 

@@ -27,6 +27,7 @@ struct Features {
   bool trilinear = true;            // some object texture is mipmapped (scene format 2)
   bool falloff = true;              // some projector's light falls off with its depth (scene format 2)
   bool facing = true;               // some projector lights only the triangles facing it (scene format 2)
+  bool closed_solids = true;        // some object drawn without culling is a closed solid (1_vertex/closed.hpp)
   PixelFormat format = PixelFormat::rgb888;
   bool fused = true;                // the fused pass is linked
   bool multipass = true;            // the paper's passes are linked

@@ -18,7 +18,7 @@ constexpr std::uint8_t repeat_size_of(const TextureLevel& level) {
 constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
   Features f{};
   f.max_projectors = scene.projector_count;
-  f.shadows = f.pcf = f.nearest = f.bilinear = f.clamped = f.tinted = f.trilinear = f.falloff = f.facing = false;
+  f.shadows = f.pcf = f.nearest = f.bilinear = f.clamped = f.tinted = f.trilinear = f.falloff = f.facing = f.closed_solids = false;
   auto filter_of = [&](const TextureData& t) {
     if (t.filter == Filter::nearest) f.nearest = true;
     else f.bilinear = true;
@@ -27,6 +27,7 @@ constexpr Features features_of(const PreparedScene& scene, const Knobs& knobs) {
   f.any_repeat_size = false;
   for (std::uint16_t o = 0; o < scene.object_count; ++o) {
     const ObjectData& object = scene.objects[o];
+    f.closed_solids |= object.closed && object.cull == Cull::none;
     if (object.texture < 0) continue;
     const TextureData& t = scene.textures[object.texture];
     filter_of(t);
@@ -71,7 +72,8 @@ constexpr bool covers(const Features& built, const Features& needed) {
   return built.max_projectors >= needed.max_projectors && (built.shadows || !needed.shadows) &&
          (built.pcf || !needed.pcf) && (built.nearest || !needed.nearest) && (built.bilinear || !needed.bilinear) &&
          (built.clamped || !needed.clamped) && (built.tinted || !needed.tinted) && (built.trilinear || !needed.trilinear) &&
-         (built.falloff || !needed.falloff) && (built.facing || !needed.facing) && sizes;
+         (built.falloff || !needed.falloff) && (built.facing || !needed.facing) &&
+         (built.closed_solids || !needed.closed_solids) && sizes;
 }
 
 }  // namespace spanlight

@@ -199,7 +199,10 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     const Mat4Block* to_projector = matrices.projector_from_object + o * pc;
     if (object.vertex_count > 8 && object_beyond_a_plane(object.bounds, to_clip, guard)) continue;
     // A closed solid seen from outside shows no back face (1_vertex/closed.hpp): cull them.
-    const Cull cull = object.closed && closed_and_outside(object, to_clip, guard) ? Cull::back : object.cull;
+    Cull cull = object.cull;
+    if constexpr (F.closed_solids) {
+      if (object.closed && closed_and_outside(object, to_clip, guard)) cull = Cull::back;
+    }
     const bool small_allowed = small_path_allowed(scene, object, view);
     // The small path's uv step scale, from the texture alone (the same in every pass, as the path's choice).
     const int small_texel_bits = object.texture < 0 ? 32 : surface_of(object, scene.textures).scale.texel_bits;

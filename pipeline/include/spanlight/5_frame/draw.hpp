@@ -326,6 +326,8 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
         // cuts from them. One array serves both: it is the largest thing on a frame's stack.
         ClipPolygon<P> poly;  // v[0, count) is all that is read: no zeroing
         if ((a.outside | b.outside | c.outside) == 0) {
+          // A back face leaves before the small path's depth and uv checks (setup would cull it).
+          if (cull == Cull::back && faces_away(a.screen, b.screen, c.screen)) continue;
           if (banded && !may_cover_rows(a.screen, b.screen, c.screen, view)) continue;
           const ScreenVertex corners[3] = {a.screen, b.screen, c.screen};
           if (small_allowed && drawn_small(corners, index)) continue;

@@ -39,7 +39,7 @@ bool closed_solid(const std::vector<std::int32_t>& xyz, const std::vector<std::a
   for (const auto& t : triangles) {
     const std::array<std::uint32_t, 3> f{id[t[0]], id[t[1]], id[t[2]]};
     if (f[0] == f[1] || f[1] == f[2] || f[2] == f[0]) continue;
-    for (int k = 0; k < 3; ++k) ++edges[{f[k], f[(k + 1) % 3]}];
+    for (std::size_t k = 0; k < 3; ++k) ++edges[{f[k], f[(k + 1) % 3]}];
     parts.join(f[0], f[1]);
     parts.join(f[1], f[2]);
     faces.push_back(f);
@@ -54,7 +54,7 @@ bool closed_solid(const std::vector<std::int32_t>& xyz, const std::vector<std::a
   std::map<std::uint32_t, Wide> volume;
   for (const auto& f : faces) {
     const Position &a = where[f[0]], &b = where[f[1]], &c = where[f[2]];
-    auto cross = [&](int i, int j) { return std::int64_t{b[i]} * c[j] - std::int64_t{b[j]} * c[i]; };  // < 2^63
+    auto cross = [&](std::size_t i, std::size_t j) { return std::int64_t{b[i]} * c[j] - std::int64_t{b[j]} * c[i]; };  // < 2^63
     volume[parts.root(f[0])] += Wide{a[0]} * cross(1, 2) + Wide{a[1]} * cross(2, 0) + Wide{a[2]} * cross(0, 1);
   }
   for (const auto& [part, six_v] : volume)

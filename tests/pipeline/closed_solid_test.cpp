@@ -222,3 +222,30 @@ TEST_CASE("a closed solid in a mirror, cut by the near plane or around the eye d
     CHECK_FALSE(same_picture(c.frame, b.frame));  // here culling would lose faces that show
   }
 }
+
+TEST_CASE("faces_away is setup's cull test: a back face leaves the loop only where setup would cull it", "[pipeline][closed]") {
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<std::int32_t> window(-(1 << 21) + 1, (1 << 21) - 1), near(-(1 << 15), (1 << 15) - 1);
+  const int cases = sanitized ? 20000 : 200000;
+  int away = 0;
+  for (int n = 0; n < cases; ++n) {
+    ScreenVertex v[3]{};
+    v[0].x = window(rng);
+    v[0].y = window(rng);
+    for (int k = 1; k < 3; ++k) {  // half of them small, as a model's triangles: the 15-bit products
+      v[k].x = n % 2 ? v[0].x + near(rng) / (1 << (n % 13)) : window(rng);
+      v[k].y = n % 2 ? v[0].y + near(rng) / (1 << (n % 11)) : window(rng);
+    }
+    if (n % 7 == 0) {  // collinear: no area (it may leave the window range; only the sign is read)
+      v[2].x = v[0].x + 2 * (v[1].x - v[0].x);
+      v[2].y = v[0].y + 2 * (v[1].y - v[0].y);
+    }
+    const bool faces = faces_away(v[0], v[1], v[2]);
+    REQUIRE(faces == (signed_double_area(v[0], v[1], v[2]) > 0));
+    TriangleSetup setup{};
+    if (faces) REQUIRE_FALSE(setup_triangle(v, Cull::back, 240, setup));
+    away += faces;
+  }
+  CHECK(away > cases / 4);
+}
+

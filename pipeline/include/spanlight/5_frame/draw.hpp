@@ -198,8 +198,11 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
                                                         : matrices.light_clip_from_object[o * pc + view.light_projector];
     const Mat4Block* to_projector = matrices.projector_from_object + o * pc;
     if (object.vertex_count > 8 && object_beyond_a_plane(object.bounds, to_clip, guard)) continue;
-    // A closed solid seen from outside shows no back face (1_vertex/closed.hpp): cull them.
-    Cull cull = object.cull;
+    // A closed solid seen from outside shows no back face (1_vertex/closed.hpp): cull them. The
+    // lambdas below take it as an argument (captured, it would widen their closures on the stack),
+    // and a build without closed solids reads the object's own (a copy held across the loop takes
+    // a stack slot on Cortex-M4: render_frame's stack is within 8 bytes of its 2 KiB there).
+    std::conditional_t<F.closed_solids, Cull, const Cull&> cull = object.cull;
     if constexpr (F.closed_solids) {
       if (object.closed && closed_and_outside(object, to_clip, guard)) cull = Cull::back;
     }
@@ -209,9 +212,9 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     cache_vertices(object, to_clip, view.width, view.height, guard, cache);
 
     // Stages 2 and 3 for one triangle whose window vertices are known (cached, or cut by the clip stage).
-    auto draw_general = [&](const ScreenVertex (&corners)[3], const ClipVertex<P>* const (&clip_corners)[3]) {
+    auto draw_general = [&](const ScreenVertex (&corners)[3], const ClipVertex<P>* const (&clip_corners)[3], Cull culling) {
       TriangleSetup setup{};
-      if (!setup_triangle(corners, cull, view.height, setup)) return;
+      if (!setup_triangle(corners, culling, view.height, setup)) return;
       if (setup.row_end <= view.row_begin || setup.row_begin >= view.row_end) return;
       TriangleAttributes<P> attrs{};
       const ClipVertex<P>* const ordered[3] = {clip_corners[setup.order[0]], clip_corners[setup.order[1]],
@@ -267,7 +270,9 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     // The small path (2_triangle/small.hpp): false when the triangle is not small, or not flat
     // enough for its quadratic uv, and the general path is to draw it. Out of line, so that its
     // state is never on the stack under the general path's walk, where a frame's peak is.
-    auto drawn_small = [&](const ScreenVertex (&corners)[3], const std::uint32_t (&index)[3]) SPANLIGHT_LAMBDA_NOINLINE_ATTR {
+    auto drawn_small = [&](const ScreenVertex (&corners)[3], const std::uint32_t (&index)[3], Cull culling) SPANLIGHT_LAMBDA_NOINLINE_ATTR {
+      // A back face leaves before the depth, uv and perspective checks (setup would cull it).
+      if (culling == Cull::back && faces_away(corners[0], corners[1], corners[2])) return true;
       std::uint32_t z_lo = 0xFFFFFFFFu, z_hi = 0;
       for (const ScreenVertex& s : corners) {
         const std::uint32_t z = static_cast<std::uint32_t>(s.z) << 2;
@@ -298,7 +303,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
       };
       SmallTriangle t;
       bool covers = false;
-      if (!setup_small(corners, cull, view.height, t, covers, may_see)) return false;
+      if (!setup_small(corners, culling, view.height, t, covers, may_see)) return false;
       if (!covers || t.row_end <= view.row_begin || t.row_begin >= view.row_end) return true;  // nothing to draw
       draw_small<P>(t, object, index, corners, weights, range, needs, view, kernel, hooks);
       return true;
@@ -326,11 +331,9 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
         // cuts from them. One array serves both: it is the largest thing on a frame's stack.
         ClipPolygon<P> poly;  // v[0, count) is all that is read: no zeroing
         if ((a.outside | b.outside | c.outside) == 0) {
-          // A back face leaves before the small path's depth and uv checks (setup would cull it).
-          if (cull == Cull::back && faces_away(a.screen, b.screen, c.screen)) continue;
           if (banded && !may_cover_rows(a.screen, b.screen, c.screen, view)) continue;
           const ScreenVertex corners[3] = {a.screen, b.screen, c.screen};
-          if (small_allowed && drawn_small(corners, index)) continue;
+          if (small_allowed && drawn_small(corners, index, cull)) continue;
           for (int k = 0; k < 3; ++k) {  // the window corners come from the cache: no clip position
             ClipVertex<P>& corner = poly.v[k];
             corner.u = needs.uv ? object.uvs[index[k] * 2] : 0;
@@ -339,7 +342,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
               corner.proj[j] = transform(to_projector[j], object.positions + index[k] * 3);
           }
           const ClipVertex<P>* const clip_corners[3] = {&poly.v[0], &poly.v[1], &poly.v[2]};
-          draw_general(corners, clip_corners);
+          draw_general(corners, clip_corners, cull);
           continue;
         }
         // A vertex beyond a clip plane: the triangle is cut from its positions again.
@@ -353,7 +356,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
           corners[1] = corners[2];
           corners[2] = project(poly.v[k + 1].clip, view.width, view.height);
           const ClipVertex<P>* const clip_corners[3] = {&poly.v[0], &poly.v[k], &poly.v[k + 1]};
-          draw_general(corners, clip_corners);
+          draw_general(corners, clip_corners, cull);
         }
       }
     }

@@ -13,23 +13,10 @@
 #include <cstdint>
 
 #include "fixedpoint/bits.hpp"
-#include "spanlight/1_vertex/clip.hpp"
-#include "spanlight/1_vertex/transform.hpp"
+#include "spanlight/1_vertex/vertex_cache.hpp"
 #include "spanlight/scene.hpp"
 
 namespace spanlight {
-
-// Whether every vertex of the object lies in front of the near plane, from its bounding box: the
-// corners' distances (z + w) beyond `margin`, the bound object_beyond_a_plane states for a vertex's
-// computed distance against the corners' (a convex combination).
-constexpr bool object_before_near(const Bounds& box, const Mat4Block& to_clip, std::int64_t margin) {
-  for (unsigned corner = 0; corner < 8; ++corner) {
-    const std::int32_t p[3] = {(corner & 1u) ? box.max[0] : box.min[0], (corner & 2u) ? box.max[1] : box.min[1],
-                               (corner & 4u) ? box.max[2] : box.min[2]};
-    if (plane_distance_with(ClipPlane::near, transform(to_clip, p), 0) <= margin) return false;
-  }
-  return true;
-}
 
 // Whether the view draws the object's outward faces counter-clockwise, as cull "back" keeps them:
 // the sign of the determinant of to_clip's rows x, y, w over x, y, z. Those rows are K (V M), K the
@@ -63,7 +50,7 @@ constexpr bool view_keeps_winding(const Mat4Block& to_clip) {
 // Whether this pass may cull the back faces of an object drawn without culling (see above).
 [[gnu::noinline]] constexpr bool closed_and_outside(const ObjectData& object, const Mat4Block& to_clip, std::int64_t guard) {
   return object.cull == Cull::none && object.closed && view_keeps_winding(to_clip) &&
-         object_before_near(object.bounds, to_clip, 2 * (guard + 2));
+         object_before_near(object.bounds, to_clip, guard);
 }
 
 }  // namespace spanlight

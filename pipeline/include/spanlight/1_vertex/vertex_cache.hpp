@@ -41,23 +41,36 @@ constexpr std::uint8_t outside_planes(const Vec4Wide& c, std::int64_t guard) {
   return static_cast<std::uint8_t>(planes_beyond(c, guard, 0));
 }
 
+// Corner k (bits 0, 1, 2: max x, y, z) of an object's bounding box, in clip space. Every point of
+// the box is a convex combination of its corners; the computed distance of a point to a clip plane
+// differs from the linear one by under guard + 2 units (clip coordinates rounded to Q.32, the guard
+// planes' quarter-unit floors), so a bound that holds at every corner by more than
+// box_corner_margin holds at every vertex.
+constexpr Vec4Wide clip_box_corner(const Bounds& box, const Mat4Block& to_clip, unsigned corner) {
+  const std::int32_t p[3] = {(corner & 1u) ? box.max[0] : box.min[0], (corner & 2u) ? box.max[1] : box.min[1],
+                             (corner & 4u) ? box.max[2] : box.min[2]};
+  return transform(to_clip, p);
+}
+constexpr std::int64_t box_corner_margin(std::int64_t guard) { return 2 * (guard + 2); }
+
 // Whether a whole object lies beyond one clip plane, from its bounding box: then every vertex
-// is beyond that plane, so no triangle of it can show and none need be transformed. Every
-// point of the box is a convex combination of its corners; the computed distance of a point
-// differs from the linear one by under guard + 2 units (clip coordinates rounded to Q.32, the
-// guard planes' quarter-unit floors), so corners beyond by more than 2 (guard + 2) leave every
-// vertex beyond too. Eight transforms: worth it for objects of more vertices than that. Out of
-// line: it runs once an object, and inlined (GCC does on Cortex-M4) its 200 bytes of corners
-// sat in draw_pass's frame under every triangle's walk.
+// is beyond that plane, so no triangle of it can show and none need be transformed. Eight
+// transforms: worth it for objects of more vertices than that. Out of line: it runs once an
+// object, and inlined (GCC does on Cortex-M4) its 200 bytes of corners sat in draw_pass's frame
+// under every triangle's walk.
 [[gnu::noinline]] constexpr bool object_beyond_a_plane(const Bounds& box, const Mat4Block& to_clip, std::int64_t guard) {
-  const std::int64_t margin = 2 * (guard + 2);
   unsigned beyond_all = 0x3Fu;
-  for (unsigned corner = 0; corner < 8 && beyond_all != 0; ++corner) {
-    const std::int32_t p[3] = {(corner & 1u) ? box.max[0] : box.min[0], (corner & 2u) ? box.max[1] : box.min[1],
-                               (corner & 4u) ? box.max[2] : box.min[2]};
-    beyond_all &= planes_beyond(transform(to_clip, p), guard, margin);
-  }
+  for (unsigned corner = 0; corner < 8 && beyond_all != 0; ++corner)
+    beyond_all &= planes_beyond(clip_box_corner(box, to_clip, corner), guard, box_corner_margin(guard));
   return beyond_all != 0;
+}
+
+// Whether every vertex of the object lies in front of the near plane: every corner of its
+// bounding box is by more than box_corner_margin (1_vertex/closed.hpp).
+constexpr bool object_before_near(const Bounds& box, const Mat4Block& to_clip, std::int64_t guard) {
+  for (unsigned corner = 0; corner < 8; ++corner)
+    if (plane_distance_with(ClipPlane::near, clip_box_corner(box, to_clip, corner), 0) <= box_corner_margin(guard)) return false;
+  return true;
 }
 
 inline void cache_vertices(const ObjectData& object, const Mat4Block& to_clip, int width, int height, std::int64_t guard,

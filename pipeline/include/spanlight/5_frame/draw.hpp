@@ -204,7 +204,7 @@ inline void draw_pass(const PreparedScene& scene, const FrameMatrices& matrices,
     // stack slot: textured_room's render_frame on M0+ 2,032 B against 2,024; the bound is 2 KiB).
     std::conditional_t<F.closed_solids, Cull, const Cull&> cull = object.cull;
     if constexpr (F.closed_solids) {
-      if (object.closed && closed_and_outside(object, to_clip, guard)) cull = Cull::back;
+      if (closed_and_outside(object, to_clip, guard)) cull = Cull::back;
     }
     const bool small_allowed = small_path_allowed(scene, object, view);
     // The small path's uv step scale, from the texture alone (the same in every pass, as the path's choice).
